@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Reading and writing point clouds.
+#pragma once
+
+#include <string>
+
+#include "FeatureLines/PointCloud.h"
+
+namespace featurelines {
+
+/// Reads a point cloud. The format follows the file's extension (case-insensitive):
+///  - .xyz .txt .asc .csv: one point per line, x y z separated by white space or commas;
+///    further columns (normals, colours) are ignored; empty lines and lines starting with
+///    '#', '//' or '%' are skipped; FreeCAD's .asc header lines are skipped.
+///  - .ply (ascii, binary little and big endian) and .pcd through PCL.
+/// Throws std::invalid_argument with a message naming the file, and the line where there is
+/// one, for: a missing or unreadable file, an unknown extension, a non-numeric or short line,
+/// NaN or infinite coordinates, and a file with no point.
+PointMatrix readCloud(const std::string& path);
+
+/// Writes P as text, one "x y z" line per point, full double precision.
+void writeXyz(const std::string& path, const PointMatrix& P);
+
+/// Throws std::invalid_argument naming `what` when P has a NaN or infinite coordinate
+/// (reporting the first bad row) or has fewer than `minimumPoints` rows.
+void checkFinite(const PointMatrix& P, const std::string& what, Eigen::Index minimumPoints = 1);
+
+} // namespace featurelines

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// k nearest neighbours of every point, and the cloud's mean point spacing.
+#pragma once
+
+#include "FeatureLines/PointCloud.h"
+
+namespace featurelines {
+
+struct NeighbourOptions
+{
+    /// Neighbours per point, the point itself not counted. Must be >= 3 and < #P.
+    int k = 16;
+    /// Worker threads for the queries (0: OpenMP's default).
+    int threads = 0;
+};
+
+struct Neighbourhoods
+{
+    /// I  #P by k indices of the k nearest other points of each point, nearest first.
+    IndexMatrix indices;
+    /// D  #P by k squared Euclidean distances, matching `indices`.
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> squaredDistances;
+
+    int k() const { return static_cast<int>(indices.cols()); }
+    Eigen::Index size() const { return indices.rows(); }
+};
+
+/// The k nearest other points of every point of P (exact search on a kd-tree).
+/// Throws std::invalid_argument when P has no more than k points or options.k < 3.
+Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options = {});
+
+/// Mean distance from each point to its nearest neighbour at a distance above zero (exact
+/// duplicates are not spacing). Every default length of the library is a multiple of it.
+/// Throws std::invalid_argument when every point coincides with its neighbours.
+double meanSpacing(const Neighbourhoods& neighbourhoods);
+
+} // namespace featurelines

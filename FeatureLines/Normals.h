@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Normals by principal component analysis of each point's k nearest neighbours.
+#pragma once
+
+#include "FeatureLines/Neighbours.h"
+
+namespace featurelines {
+
+struct NormalOptions
+{
+    /// Neighbours used per point, at most Neighbourhoods::k() (0: all of them).
+    int k = 0;
+    int threads = 0;
+};
+
+struct NormalEstimate
+{
+    /// N  #P by 3 unit normals: the eigenvector of the smallest eigenvalue of the covariance of
+    /// the point and its neighbours. Unoriented (the sign is arbitrary but deterministic).
+    NormalMatrix normals;
+    /// V  #P surface variation lambda0 / (lambda0 + lambda1 + lambda2) (Pauly et al.), 0 on a
+    /// plane, up to 1/3 for isotropic scatter.
+    Eigen::VectorXd variation;
+};
+
+/// PCA normals of P over the neighbourhoods N.
+NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
+                          const NormalOptions& options = {});
+
+} // namespace featurelines
