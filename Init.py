@@ -1,0 +1,1 @@
+# FreeCAD start-up file of the FeatureLines module (run by FreeCAD for every Mod folder).
