@@ -38,6 +38,10 @@ struct ThresholdOptions
     int bins = 50;
     /// Percentage of the highest values removed before the histogram is built (Sec. 2.4).
     double outlierPercent = 0.0;
+    /// Smallest peak b1 a threshold may follow, in percent of the values searched. Sec. 2.2
+    /// wants a patch's peak followed by a valley; since e = b1 when b2 = 0, a few stray values
+    /// before an empty bin would otherwise beat a real but shallow valley. 0: the paper as is.
+    double minPeakPercent = 1.0;
     ThresholdSearch search = ThresholdSearch::AllStarts;
 };
 
@@ -60,7 +64,8 @@ struct ThresholdResult
 };
 
 /// One threshold of `values`: the tau and start_curv that maximise e(tau, start_curv).
-/// Throws std::invalid_argument when fewer than 2 distinct values remain.
+/// Throws std::invalid_argument when fewer than 2 distinct values remain, or when no run of
+/// bins below the last one holds minPeakPercent of the values (nothing to separate).
 ThresholdResult findThreshold(const std::vector<double>& values, const ThresholdOptions& options = {});
 
 /// Sec. 2.3: the next lower threshold, searched on the values <= `threshold` only.
