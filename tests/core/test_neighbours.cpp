@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "FeatureLines/Neighbours.h"
+
+using namespace featurelines;
+
+namespace {
+
+PointMatrix randomCloud(int n, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    PointMatrix P(n, 3);
+    for (int i = 0; i < n; ++i) {
+        for (int d = 0; d < 3; ++d) {
+            P(i, d) = coordinate(rng);
+        }
+    }
+    return P;
+}
+
+/// The k nearest other points of point i by sorting all distances.
+std::vector<int> bruteForce(const PointMatrix& P, int i, int k)
+{
+    std::vector<int> order;
+    for (int j = 0; j < P.rows(); ++j) {
+        if (j != i) {
+            order.push_back(j);
+        }
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return (P.row(a) - P.row(i)).squaredNorm() < (P.row(b) - P.row(i)).squaredNorm();
+    });
+    order.resize(k);
+    return order;
+}
+
+/// Square lattice of side n in the plane z = 0 with the given spacing.
+PointMatrix squareLattice(int n, double spacing)
+{
+    PointMatrix P(n * n, 3);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            P.row(i * n + j) << i * spacing, j * spacing, 0.0;
+        }
+    }
+    return P;
+}
+
+} // namespace
+
+TEST(Neighbours, MatchBruteForceOnRandomCloud)
+{
+    const PointMatrix P = randomCloud(600, 7);
+    const int k = 12;
+    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
+    ASSERT_EQ(N.size(), P.rows());
+    ASSERT_EQ(N.k(), k);
+    for (int i = 0; i < P.rows(); ++i) {
+        const std::vector<int> expected = bruteForce(P, i, k);
+        for (int j = 0; j < k; ++j) {
+            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
+            EXPECT_DOUBLE_EQ(N.squaredDistances(i, j),
+                             (P.row(expected[j]) - P.row(i)).squaredNorm());
+        }
+    }
+}
+
+TEST(Neighbours, SameAnswerForAnyThreadCount)
+{
+    const PointMatrix P = randomCloud(3000, 11);
+    const Neighbourhoods one = nearestNeighbours(P, {16, 1});
+    const Neighbourhoods two = nearestNeighbours(P, {16, 2});
+    EXPECT_EQ(one.indices, two.indices);
+    EXPECT_EQ(one.squaredDistances, two.squaredDistances);
+}
+
+TEST(Neighbours, DuplicatePointsAreNeighboursButNeverTheQueryItself)
+{
+    // Every lattice point twice: its twin is its nearest neighbour, at distance zero.
+    const PointMatrix lattice = squareLattice(10, 0.5);
+    const Eigen::Index n = lattice.rows();
+    PointMatrix P(2 * n, 3);
+    P << lattice, lattice;
+    const Neighbourhoods N = nearestNeighbours(P, {6, 0});
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const Eigen::Index twin = i < n ? i + n : i - n;
+        EXPECT_EQ(N.indices(i, 0), twin);
+        EXPECT_EQ(N.squaredDistances(i, 0), 0.0);
+        for (int j = 0; j < N.k(); ++j) {
+            EXPECT_NE(N.indices(i, j), i);
+        }
+    }
+    // Zero distances are not spacing: the lattice spacing remains.
+    EXPECT_DOUBLE_EQ(meanSpacing(N), 0.5);
+}
+
+TEST(Neighbours, MoreCoincidentPointsThanNeighbours)
+{
+    // 30 copies of one point among a lattice: each copy's neighbours are other copies only.
+    const PointMatrix lattice = squareLattice(8, 1.0);
+    PointMatrix P(lattice.rows() + 30, 3);
+    P.topRows(lattice.rows()) = lattice;
+    P.bottomRows(30).rowwise() = Eigen::RowVector3d(3.5, 3.5, 2.0);
+    const Neighbourhoods N = nearestNeighbours(P, {5, 0});
+    for (Eigen::Index i = lattice.rows(); i < P.rows(); ++i) {
+        for (int j = 0; j < N.k(); ++j) {
+            EXPECT_NE(N.indices(i, j), i);
+            EXPECT_GE(N.indices(i, j), lattice.rows());
+            EXPECT_EQ(N.squaredDistances(i, j), 0.0);
+        }
+    }
+}
+
+TEST(Neighbours, MeanSpacingOfSquareLattice)
+{
+    const Neighbourhoods N = nearestNeighbours(squareLattice(20, 0.25), {8, 0});
+    EXPECT_DOUBLE_EQ(meanSpacing(N), 0.25);
+}
+
+TEST(Neighbours, BadInputThrows)
+{
+    const PointMatrix P = randomCloud(10, 3);
+    EXPECT_THROW(nearestNeighbours(P, {10, 0}), std::invalid_argument);  // k == #P
+    EXPECT_THROW(nearestNeighbours(P, {12, 0}), std::invalid_argument);  // k > #P
+    EXPECT_THROW(nearestNeighbours(P, {2, 0}), std::invalid_argument);   // k < 3
+    EXPECT_NO_THROW(nearestNeighbours(P, {9, 0}));
+
+    PointMatrix withNan = P;
+    withNan(4, 1) = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(nearestNeighbours(withNan, {3, 0}), std::invalid_argument);
+
+    PointMatrix allSame(8, 3);
+    allSame.setConstant(1.0);
+    EXPECT_THROW(meanSpacing(nearestNeighbours(allSame, {3, 0})), std::invalid_argument);
+}

@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "SampledShapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace featurelines::shapes {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+/// Jitter of a sample inside its grid cell, as a fraction of the cell: +-0.2 as a scanner's
+/// slightly irregular pattern, small enough that no two samples come close to coinciding.
+constexpr double jitter = 0.2;
+
+void requirePositive(double value, const char* name)
+{
+    if (!(value > 0.0) || !std::isfinite(value)) {
+        throw std::invalid_argument(std::string("shape sampler: ") + name +
+                                    " must be a positive length");
+    }
+}
+
+/// Collects samples, then packs them into a Sample.
+class Builder
+{
+public:
+    explicit Builder(unsigned seed) : rng_(seed), offset_(-jitter, jitter) {}
+
+    /// Number of grid cells along a parameter line of the given length (at least one).
+    static int cells(double length, double spacing)
+    {
+        return std::max(1, static_cast<int>(std::lround(length / spacing)));
+    }
+
+    /// Position of sample i of n cells on [0, 1], jittered inside its cell.
+    double cellPosition(int i, int n) { return (i + 0.5 + offset_(rng_)) / n; }
+
+    void add(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double curvature,
+             int part)
+    {
+        points_.push_back(point);
+        normals_.push_back(normal.normalized());
+        curvature_.push_back(curvature);
+        part_.push_back(part);
+    }
+
+    /// Jittered grid on a flat rectangle: origin + s * du + t * dv, s and t in [0, 1].
+    void rectangle(const Eigen::Vector3d& origin, const Eigen::Vector3d& du,
+                   const Eigen::Vector3d& dv, double spacing, int part)
+    {
+        const Eigen::Vector3d normal = du.cross(dv);
+        const int nu = cells(du.norm(), spacing);
+        const int nv = cells(dv.norm(), spacing);
+        for (int i = 0; i < nu; ++i) {
+            for (int j = 0; j < nv; ++j) {
+                add(origin + cellPosition(i, nu) * du + cellPosition(j, nv) * dv, normal, 0.0,
+                    part);
+            }
+        }
+    }
+
+    /// A zone of the sphere of the given centre and radius, in the orthonormal frame (ex, ey,
+    /// ez): polar angle theta in [0, thetaMax] from ez, azimuth phi in [0, phiSpan] from ex.
+    /// Circles of latitude are one spacing apart and each holds as many samples as its length
+    /// allows, so the density stays uniform up to the pole.
+    void sphereZone(const Eigen::Vector3d& centre, double radius, const Eigen::Vector3d& ex,
+                    const Eigen::Vector3d& ey, const Eigen::Vector3d& ez, double thetaMax,
+                    double phiSpan, double spacing, int part)
+    {
+        const int rings = cells(radius * thetaMax, spacing);
+        for (int j = 0; j < rings; ++j) {
+            const double ringTheta = (j + 0.5) / rings * thetaMax;
+            const int around = cells(radius * std::sin(ringTheta) * phiSpan, spacing);
+            for (int i = 0; i < around; ++i) {
+                const double theta = cellPosition(j, rings) * thetaMax;
+                const double phi = cellPosition(i, around) * phiSpan;
+                const Eigen::Vector3d direction =
+                    std::sin(theta) * (std::cos(phi) * ex + std::sin(phi) * ey) +
+                    std::cos(theta) * ez;
+                add(centre + radius * direction, direction, 1.0 / radius, part);
+            }
+        }
+    }
+
+    /// A cylinder sector around the axis through `centre` along ez: angle alpha in
+    /// [0, alphaSpan] from ex towards ey, axial position in [-length/2, length/2].
+    void cylinderSector(const Eigen::Vector3d& centre, double radius, double length,
+                        const Eigen::Vector3d& ex, const Eigen::Vector3d& ey,
+                        const Eigen::Vector3d& ez, double alphaSpan, double spacing, int part)
+    {
+        const int na = cells(radius * alphaSpan, spacing);
+        const int nz = cells(length, spacing);
+        for (int i = 0; i < na; ++i) {
+            for (int j = 0; j < nz; ++j) {
+                const double alpha = cellPosition(i, na) * alphaSpan;
+                const double z = (cellPosition(j, nz) - 0.5) * length;
+                const Eigen::Vector3d radial = std::cos(alpha) * ex + std::sin(alpha) * ey;
+                add(centre + radius * radial + z * ez, radial, 0.5 / radius, part);
+            }
+        }
+    }
+
+    Sample finish()
+    {
+        Sample s;
+        const Eigen::Index n = static_cast<Eigen::Index>(points_.size());
+        s.points.resize(n, 3);
+        s.normals.resize(n, 3);
+        s.meanCurvature.resize(n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            s.points.row(i) = points_[i].transpose();
+            s.normals.row(i) = normals_[i].transpose();
+            s.meanCurvature(i) = curvature_[i];
+        }
+        s.part = std::move(part_);
+        return s;
+    }
+
+private:
+    std::mt19937 rng_;
+    std::uniform_real_distribution<double> offset_;
+    std::vector<Eigen::Vector3d> points_;
+    std::vector<Eigen::Vector3d> normals_;
+    std::vector<double> curvature_;
+    std::vector<int> part_;
+};
+
+/// Unit vector along axis a (0 x, 1 y, 2 z) with the given sign.
+Eigen::Vector3d axis(int a, double sign = 1.0)
+{
+    return sign * Eigen::Vector3d::Unit(a);
+}
+
+} // namespace
+
+Sample plane(double size, double spacing, unsigned seed)
+{
+    requirePositive(size, "size");
+    requirePositive(spacing, "spacing");
+    Builder b(seed);
+    b.rectangle(Eigen::Vector3d(-size / 2, -size / 2, 0), axis(0, size), axis(1, size), spacing,
+                0);
+    return b.finish();
+}
+
+Sample sphere(double radius, double spacing, unsigned seed)
+{
+    requirePositive(radius, "radius");
+    requirePositive(spacing, "spacing");
+    Builder b(seed);
+    b.sphereZone(Eigen::Vector3d::Zero(), radius, axis(0), axis(1), axis(2), pi, 2 * pi, spacing,
+                 0);
+    return b.finish();
+}
+
+Sample cylinder(double radius, double height, double spacing, unsigned seed)
+{
+    requirePositive(radius, "radius");
+    requirePositive(height, "height");
+    requirePositive(spacing, "spacing");
+    Builder b(seed);
+    b.cylinderSector(Eigen::Vector3d::Zero(), radius, height, axis(0), axis(1), axis(2), 2 * pi,
+                     spacing, 0);
+    return b.finish();
+}
+
+Sample cube(double edge, double spacing, unsigned seed)
+{
+    requirePositive(edge, "edge");
+    requirePositive(spacing, "spacing");
+    Builder b(seed);
+    const double h = edge / 2;
+    for (int face = 0; face < 6; ++face) {
+        const int a = face / 2;
+        const double sign = face % 2 == 0 ? 1.0 : -1.0;
+        // du x dv must point outwards: (a+1, a+2) is right-handed for +, swapped for -.
+        Eigen::Vector3d du = axis((a + 1) % 3, edge);
+        Eigen::Vector3d dv = axis((a + 2) % 3, edge);
+        if (sign < 0) {
+            std::swap(du, dv);
+        }
+        const Eigen::Vector3d origin = sign * h * axis(a) - (du + dv) / 2;
+        b.rectangle(origin, du, dv, spacing, face);
+    }
+    return b.finish();
+}
+
+Sample roundedCube(double edge, double radius, double spacing, unsigned seed)
+{
+    requirePositive(edge, "edge");
+    requirePositive(radius, "radius");
+    requirePositive(spacing, "spacing");
+    if (!(radius < edge / 2)) {
+        throw std::invalid_argument("shape sampler: the rounding radius must be below half the "
+                                    "cube's edge");
+    }
+    Builder b(seed);
+    // The rounded cube is the set of points at distance `radius` from the inner box
+    // [-inner, inner]^3: its faces, edges and corners become flats, fillets and corners.
+    const double inner = edge / 2 - radius;
+    const double side = 2 * inner;
+    for (int face = 0; face < 6; ++face) {
+        const int a = face / 2;
+        const double sign = face % 2 == 0 ? 1.0 : -1.0;
+        Eigen::Vector3d du = axis((a + 1) % 3, side);
+        Eigen::Vector3d dv = axis((a + 2) % 3, side);
+        if (sign < 0) {
+            std::swap(du, dv);
+        }
+        b.rectangle(sign * (edge / 2) * axis(a) - (du + dv) / 2, du, dv, spacing, 0);
+    }
+    for (int a = 0; a < 3; ++a) {          // fillet axis
+        for (int corner = 0; corner < 4; ++corner) {
+            const double su = corner & 1 ? -1.0 : 1.0;
+            const double sv = corner & 2 ? -1.0 : 1.0;
+            const Eigen::Vector3d ex = axis((a + 1) % 3, su);
+            const Eigen::Vector3d ey = axis((a + 2) % 3, sv);
+            b.cylinderSector(inner * (ex + ey), radius, side, ex, ey, axis(a), pi / 2, spacing,
+                             1);
+        }
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d s(corner & 1 ? -1.0 : 1.0, corner & 2 ? -1.0 : 1.0,
+                                corner & 4 ? -1.0 : 1.0);
+        b.sphereZone(inner * s, radius, axis(0, s.x()), axis(1, s.y()), axis(2, s.z()), pi / 2,
+                     pi / 2, spacing, 2);
+    }
+    return b.finish();
+}
+
+void addNormalNoise(Sample& s, double sigma, unsigned seed)
+{
+    if (!(sigma >= 0.0) || !std::isfinite(sigma)) {
+        throw std::invalid_argument("shape sampler: the noise sigma must be zero or positive");
+    }
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> offset(0.0, sigma);
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+        s.points.row(i) += offset(rng) * s.normals.row(i);
+    }
+}
+
+} // namespace featurelines::shapes
