@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/Smoothing.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace featurelines {
+
+PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
+                            const std::vector<int>& subset, const SmoothingOptions& options)
+{
+    if (N.size() != P.rows()) {
+        throw std::invalid_argument("smoothing: the neighbourhoods were computed for another "
+                                    "cloud (" + std::to_string(N.size()) + " rows for " +
+                                    std::to_string(P.rows()) + " points)");
+    }
+    if (options.iterations < 0 || !std::isfinite(options.lambda) || !std::isfinite(options.mu)) {
+        throw std::invalid_argument("smoothing: iterations must be >= 0 and lambda, mu finite");
+    }
+    const Eigen::Index n = P.rows();
+    std::vector<char> inSubset(n, 0);
+    for (const int i : subset) {
+        if (i < 0 || i >= n) {
+            throw std::invalid_argument("smoothing: point index " + std::to_string(i) +
+                                        " is outside the cloud of " + std::to_string(n) +
+                                        " points");
+        }
+        if (inSubset[i]) {
+            throw std::invalid_argument("smoothing: point index " + std::to_string(i) +
+                                        " is listed twice");
+        }
+        inSubset[i] = 1;
+    }
+
+    // Sec. 2.4: the region holds no sharp edge, so its points are smoothed among themselves;
+    // neighbours outside it (across a sharp edge) are left out of the umbrella.
+    const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
+    std::vector<int> offsets(m + 1, 0);
+    std::vector<int> members;
+    members.reserve(m * N.k());
+    for (Eigen::Index s = 0; s < m; ++s) {
+        const int i = subset[s];
+        for (int j = 0; j < N.k(); ++j) {
+            if (inSubset[N.indices(i, j)]) {
+                members.push_back(N.indices(i, j));
+            }
+        }
+        offsets[s + 1] = static_cast<int>(members.size());
+    }
+
+    PointMatrix current = P;
+    PointMatrix moved(m, 3);
+    // One umbrella step for every subset point from the same positions (Jacobi), so the
+    // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
+    auto step = [&](double factor) {
+#pragma omp parallel for schedule(static, 4096)
+        for (Eigen::Index s = 0; s < m; ++s) {
+            const int i = subset[s];
+            const int count = offsets[s + 1] - offsets[s];
+            if (count == 0) {
+                moved.row(s) = current.row(i);
+                continue;
+            }
+            Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+            for (int j = offsets[s]; j < offsets[s + 1]; ++j) {
+                mean += current.row(members[j]);
+            }
+            mean /= count;
+            moved.row(s) = current.row(i) + factor * (mean - current.row(i));
+        }
+        for (Eigen::Index s = 0; s < m; ++s) {
+            current.row(subset[s]) = moved.row(s);
+        }
+    };
+    for (int iteration = 0; iteration < options.iterations; ++iteration) {
+        // Taubin (1995): a shrinking step lambda > 0 then an inflating step mu < -lambda.
+        step(options.lambda);
+        if (options.mu != 0.0) {
+            step(options.mu);
+        }
+    }
+    return current;
+}
+
+} // namespace featurelines

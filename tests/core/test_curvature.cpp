@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "FeatureLines/Curvature.h"
+#include "FeatureLines/Normals.h"
+#include "FeatureLines/Smoothing.h"
+#include "SampledShapes.h"
+
+using namespace featurelines;
+
+namespace {
+
+/// Largest relative error |H - truth| / truth over the points where `keep` is true.
+double worstRelativeError(const Eigen::VectorXd& H, double truth,
+                          const std::vector<char>& keep = {})
+{
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < H.size(); ++i) {
+        if (keep.empty() || keep[i]) {
+            worst = std::max(worst, std::abs(H(i) - truth) / truth);
+        }
+    }
+    return worst;
+}
+
+double median(std::vector<double> values)
+{
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+}
+
+/// Curvature of a sample with k = 16 neighbours and PCA normals, as the pipeline does it.
+Eigen::VectorXd curvatureOf(const PointMatrix& P, const CurvatureOptions& options = {})
+{
+    const Neighbourhoods N = nearestNeighbours(P, {16, 0});
+    return meanCurvature(P, pcaNormals(P, N).normals, N, options);
+}
+
+} // namespace
+
+TEST(Curvature, PlaneIsFlat)
+{
+    const shapes::Sample s = shapes::plane(30.0, 1.0, 1);
+    EXPECT_LT(curvatureOf(s.points).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(Curvature, SphereIsOneOverRadius)
+{
+    // r = 20 spacings: every point within 2% of 1/r.
+    const shapes::Sample s = shapes::sphere(20.0, 1.0, 2);
+    EXPECT_LT(worstRelativeError(curvatureOf(s.points), 1.0 / 20.0), 0.02);
+}
+
+TEST(Curvature, SphereOfOtherUnitScalesInversely)
+{
+    // The same sphere in a unit 1000 times smaller: curvature 1000 times larger.
+    const shapes::Sample s = shapes::sphere(20.0, 1.0, 2);
+    const PointMatrix small = s.points * 1e-3;
+    EXPECT_LT(worstRelativeError(curvatureOf(small), 1.0 / 20e-3), 0.02);
+}
+
+TEST(Curvature, CylinderIsOneOverTwiceRadius)
+{
+    // Open ends included: a one-sided neighbourhood still fits the same quadric.
+    const shapes::Sample s = shapes::cylinder(20.0, 60.0, 1.0, 3);
+    EXPECT_LT(worstRelativeError(curvatureOf(s.points), 1.0 / 40.0), 0.02);
+}
+
+TEST(Curvature, SignFollowsTheNormal)
+{
+    const shapes::Sample s = shapes::sphere(20.0, 1.0, 4);
+    const Neighbourhoods N = nearestNeighbours(s.points, {16, 0});
+    CurvatureOptions options;
+    options.signedCurvature = true;
+    // Outward normals: the sphere bends away from them, H = +1/r; inward: -1/r.
+    const Eigen::VectorXd outward = meanCurvature(s.points, s.normals, N, options);
+    const Eigen::VectorXd inward = meanCurvature(s.points, -s.normals, N, options);
+    EXPECT_LT(worstRelativeError(outward, 1.0 / 20.0), 0.02);
+    EXPECT_LT(worstRelativeError(-inward, 1.0 / 20.0), 0.02);
+}
+
+TEST(Curvature, NoisySphereAfterSmoothing)
+{
+    // Noise sigma = 0.2 spacing along the normal, then Taubin smoothing (10 passes). A looser
+    // bound than noise-free: the median of |H| within 5% of 1/r and the median per-point
+    // error below 25%, less than half the error before smoothing.
+    shapes::Sample s = shapes::sphere(20.0, 1.0, 5);
+    shapes::addNormalNoise(s, 0.2, 6);
+    const double truth = 1.0 / 20.0;
+    const Neighbourhoods N = nearestNeighbours(s.points, {16, 0});
+    std::vector<int> all(s.size());
+    std::iota(all.begin(), all.end(), 0);
+    SmoothingOptions smoothing;
+    smoothing.iterations = 10;
+    const PointMatrix smoothed = laplacianSmooth(s.points, N, all, smoothing);
+
+    const Eigen::VectorXd before = curvatureOf(s.points);
+    const Eigen::VectorXd after = curvatureOf(smoothed);
+    std::vector<double> errorBefore, errorAfter, valueAfter;
+    for (Eigen::Index i = 0; i < s.size(); ++i) {
+        errorBefore.push_back(std::abs(before(i) - truth) / truth);
+        errorAfter.push_back(std::abs(after(i) - truth) / truth);
+        valueAfter.push_back(after(i));
+    }
+    EXPECT_NEAR(median(valueAfter), truth, 0.05 * truth);
+    EXPECT_LT(median(errorAfter), 0.25);
+    EXPECT_LT(median(errorAfter), 0.5 * median(errorBefore));
+}
+
+TEST(Curvature, CollinearNeighboursGiveZeroNotNaN)
+{
+    // Points on a line: no quadric is determined; the answer is 0, finite.
+    PointMatrix P(40, 3);
+    for (int i = 0; i < 40; ++i) {
+        P.row(i) << 0.5 * i, 0.25 * i, -0.1 * i;
+    }
+    const Neighbourhoods N = nearestNeighbours(P, {8, 0});
+    NormalMatrix normals(40, 3);
+    normals.rowwise() = Eigen::RowVector3d(0.0, 0.0, 1.0);
+    const Eigen::VectorXd H = meanCurvature(P, normals, N);
+    EXPECT_TRUE(H.allFinite());
+    EXPECT_EQ(H.cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(Curvature, BadInputThrows)
+{
+    const shapes::Sample s = shapes::plane(10.0, 1.0, 7);
+    const Neighbourhoods N = nearestNeighbours(s.points, {8, 0});
+    EXPECT_THROW(meanCurvature(s.points, s.normals, N, {4, false, 0}), std::invalid_argument);
+    EXPECT_THROW(meanCurvature(s.points, s.normals, N, {9, false, 0}), std::invalid_argument);
+    EXPECT_THROW(meanCurvature(s.points, s.normals.topRows(5), N), std::invalid_argument);
+}
