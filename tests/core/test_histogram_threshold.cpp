@@ -10,7 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include "FeatureLines/Curvature.h"
 #include "FeatureLines/HistogramThreshold.h"
+#include "FeatureLines/Neighbours.h"
+#include "FeatureLines/Normals.h"
+#include "FeatureLines/Smoothing.h"
+#include "SampledShapes.h"
 
 using namespace featurelines;
 
@@ -340,4 +345,94 @@ TEST(HistogramThreshold, BadInputThrowsWithAReason)
     options = {};
     options.minPeakPercent = 0.0;
     EXPECT_NO_THROW(findThreshold(spike, options));
+}
+
+// ---- Fig. 4: the rounded cube --------------------------------------------------------------
+
+namespace {
+
+struct CubeCurvature
+{
+    std::vector<double> values;
+    /// 0 flat, 1 fillet, 2 corner (shapes::roundedCube).
+    std::vector<int> part;
+    double radius = 0.0;
+};
+
+/// |H| of a rounded cube (edge 40, fillet radius 6, spacing 0.5: about 33000 points) from k = 16
+/// neighbours, PCA normals and the quadric fit of Sec. 2.1; with `smoothingPasses` > 0 after
+/// Gaussian noise of 0.2 spacing across the surface and that many Taubin passes (Sec. 2.4).
+CubeCurvature roundedCubeCurvature(int smoothingPasses)
+{
+    const double edge = 40.0, radius = 6.0, spacing = 0.5;
+    shapes::Sample s = shapes::roundedCube(edge, radius, spacing, 11);
+    NeighbourOptions nopt;
+    nopt.k = 16;
+    if (smoothingPasses > 0) {
+        shapes::addNormalNoise(s, 0.2 * spacing, 12);
+        const Neighbourhoods noisy = nearestNeighbours(s.points, nopt);
+        std::vector<int> all(static_cast<std::size_t>(s.size()));
+        std::iota(all.begin(), all.end(), 0);
+        SmoothingOptions sopt;
+        sopt.iterations = smoothingPasses;
+        s.points = laplacianSmooth(s.points, noisy, all, sopt);
+    }
+    const Neighbourhoods N = nearestNeighbours(s.points, nopt);
+    const NormalEstimate normals = pcaNormals(s.points, N);
+    const Eigen::VectorXd H = meanCurvature(s.points, normals.normals, N);
+    return {std::vector<double>(H.data(), H.data() + H.size()), s.part, radius};
+}
+
+/// Fig. 4: for each L_start, tau1 (between the fillets' 1/(2r) and the corners' 1/r) and tau2
+/// (between the flat 0 and 1/(2r)) are the first threshold and one refinement towards the other
+/// (which of the two comes first depends on L_start). Between them the two thresholds give at
+/// least 80% of each patch its own label: only points within about one neighbourhood radius of
+/// a patch border (about 14% of the flat areas) see both patches in their quadric fit.
+void expectBothThresholds(const CubeCurvature& c, const ThresholdOptions& base)
+{
+    const double fillet = 1.0 / (2.0 * c.radius), corner = 1.0 / c.radius;
+    const auto isTau1 = [&](double t) { return t > fillet && t < corner; };
+    const auto isTau2 = [&](double t) { return t > 0.0 && t < fillet; };
+    for (int bins : {20, 50, 100, 1000, static_cast<int>(c.values.size())}) {
+        ThresholdOptions options = base;
+        options.bins = bins;
+        const ThresholdResult first = findThreshold(c.values, options);
+        SCOPED_TRACE(testing::Message() << "L_start " << bins << ", first tau " << first.threshold);
+        double tau1 = first.threshold, tau2 = first.threshold;
+        if (isTau1(first.threshold)) {
+            tau2 = findLowerThreshold(c.values, first.threshold, options).threshold;
+            EXPECT_TRUE(isTau2(tau2)) << "lower tau " << tau2;
+        } else {
+            ASSERT_TRUE(isTau2(first.threshold));
+            tau1 = findHigherThreshold(c.values, first.threshold, options).threshold;
+            EXPECT_TRUE(isTau1(tau1)) << "higher tau " << tau1;
+        }
+        long total[3] = {0, 0, 0}, right[3] = {0, 0, 0};
+        for (std::size_t i = 0; i < c.values.size(); ++i) {
+            const double v = c.values[i];
+            const int label = v <= tau2 ? 0 : v <= tau1 ? 1 : 2;
+            ++total[c.part[i]];
+            right[c.part[i]] += label == c.part[i] ? 1 : 0;
+        }
+        for (int part = 0; part < 3; ++part) {
+            EXPECT_GE(right[part], 0.8 * total[part])
+                << "part " << part << ": " << right[part] << " of " << total[part];
+        }
+    }
+}
+
+} // namespace
+
+TEST(HistogramThreshold, RoundedCubeThresholdsSeparateFlatsFilletsAndCorners)
+{
+    expectBothThresholds(roundedCubeCurvature(0), {});
+}
+
+TEST(HistogramThreshold, NoisyRoundedCubeAfterSmoothingAndOutlierRemoval)
+{
+    // sigma = 0.2 spacing leaves |H| noise of the order of 1/(2r) after the default 5 passes
+    // (the patches' histograms overlap and no valley is left); 20 passes bring the valleys back.
+    ThresholdOptions options;
+    options.outlierPercent = 1.0;
+    expectBothThresholds(roundedCubeCurvature(20), options);
 }
