@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The accuracy benchmark's metric (bench/cad/LineScore.h) on hand-made polylines whose score
+// is known exactly.
+#include <cmath>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "LineScore.h"
+
+using featurelines::PointMatrix;
+using namespace featurelines::bench;
+
+namespace {
+
+constexpr double spacing = 0.5;
+
+/// A straight polyline from a to b with `n` vertices.
+TypedPolyline segment(LineType type, const Eigen::Vector3d& a, const Eigen::Vector3d& b, int n)
+{
+    TypedPolyline line;
+    line.type = type;
+    line.points.resize(n, 3);
+    for (int i = 0; i < n; ++i) {
+        line.points.row(i) = (a + (b - a) * (double(i) / (n - 1))).transpose();
+    }
+    return line;
+}
+
+/// A closed square of side `side` in the plane z = 0, one vertex per corner.
+TypedPolyline square(LineType type, double side)
+{
+    TypedPolyline line;
+    line.type = type;
+    line.closed = true;
+    line.points.resize(4, 3);
+    line.points << 0, 0, 0, side, 0, 0, side, side, 0, 0, side, 0;
+    return line;
+}
+
+LineScoreOptions options()
+{
+    LineScoreOptions o;
+    o.spacing = spacing;
+    return o;
+}
+
+const TypeScore& of(const LineScore& s, LineType t)
+{
+    return s.types[static_cast<size_t>(t)];
+}
+
+} // namespace
+
+TEST(LineScore, PerfectLinesScoreOne)
+{
+    const std::vector<TypedPolyline> truth = {square(LineType::Sharp, 20.0),
+                                              segment(LineType::Smooth, {0, 0, 5}, {20, 0, 5}, 41)};
+    // The detector's lines have other vertices but the same geometry.
+    const std::vector<TypedPolyline> detected = {
+        square(LineType::Sharp, 20.0), segment(LineType::Smooth, {0, 0, 5}, {20, 0, 5}, 7)};
+    const LineScore s = scoreLines(detected, truth, options());
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).precision, 1.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).recall, 1.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).f1, 1.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Smooth).f1, 1.0);
+    // No boundary in the model: recall and F1 are undefined, not 0 or 1.
+    EXPECT_TRUE(std::isnan(of(s, LineType::Boundary).f1));
+    EXPECT_EQ(s.lineCount, 2);
+}
+
+TEST(LineScore, LineShiftedByFiveSpacingsScoresZero)
+{
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {30, 0, 0}, 2)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Sharp, {0, 5 * spacing, 0}, {30, 5 * spacing, 0}, 2)};
+    const LineScore s = scoreLines(detected, truth, options());
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).precision, 0.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).recall, 0.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).f1, 0.0);
+}
+
+TEST(LineScore, WrongTypeDoesNotCount)
+{
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {30, 0, 0}, 2)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Smooth, {0, 0, 0}, {30, 0, 0}, 2)};
+    const LineScore s = scoreLines(detected, truth, options());
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).f1, 0.0);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Smooth).precision, 0.0);
+}
+
+TEST(LineScore, HalfTheEdgeFoundGivesRecallOneHalf)
+{
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {100, 0, 0}, 2)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Sharp, {0, 0, 0}, {50, 0, 0}, 2)};
+    const LineScore s = scoreLines(detected, truth, options());
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).precision, 1.0);
+    // Truth samples up to 50 + tolerance match: recall is 1/2 up to the tolerance's share.
+    const double tolShare = 3 * spacing / 100.0;
+    EXPECT_NEAR(of(s, LineType::Sharp).recall, 0.5 + tolShare, 0.01);
+}
+
+TEST(LineScore, OpenLineWithAFreeEndIsNotClosed)
+{
+    const std::vector<TypedPolyline> truth = {square(LineType::Sharp, 20.0)};
+    // Three sides of the square as one open line: both ends are free.
+    TypedPolyline open = square(LineType::Sharp, 20.0);
+    open.closed = false;
+    const LineScore s = scoreLines({open}, truth, options());
+    EXPECT_DOUBLE_EQ(s.closedness, 0.0);
+
+    const LineScore closed = scoreLines({square(LineType::Sharp, 20.0)}, truth, options());
+    EXPECT_DOUBLE_EQ(closed.closedness, 1.0);
+}
+
+TEST(LineScore, LineEndingOnAnotherLineIsJoined)
+{
+    // A closed square and a line from its side outwards to a second closed square: the
+    // connecting line ends on both squares, so all three lines count.
+    TypedPolyline inner = square(LineType::Sharp, 20.0);
+    TypedPolyline outer = square(LineType::Sharp, 60.0);
+    outer.points.rowwise() -= Eigen::RowVector3d(20, 20, 0);
+    const TypedPolyline bridge = segment(LineType::Smooth, {10, 0, 0}, {10, -20, 0}, 5);
+    LineScore s = scoreLines({inner, outer, bridge}, {inner, outer, bridge}, options());
+    EXPECT_DOUBLE_EQ(s.closedness, 1.0);
+
+    // The same connecting line stopping halfway has one free end.
+    const TypedPolyline stub = segment(LineType::Smooth, {10, 0, 0}, {10, -10, 0}, 5);
+    s = scoreLines({inner, outer, stub}, {inner, outer, bridge}, options());
+    EXPECT_NEAR(s.closedness, 2.0 / 3.0, 1e-12);
+}
+
+TEST(LineScore, OpenLineThatReturnsToItsStartIsJoined)
+{
+    // A square given as an open polyline whose last vertex repeats the first.
+    TypedPolyline loop = square(LineType::Sharp, 20.0);
+    loop.closed = false;
+    loop.points.conservativeResize(5, 3);
+    loop.points.row(4) = loop.points.row(0);
+    const LineScore s = scoreLines({loop}, {square(LineType::Sharp, 20.0)}, options());
+    EXPECT_DOUBLE_EQ(s.closedness, 1.0);
+}
+
+TEST(LineScore, FlaggedPointsNearAnotherTypeLeaveThePrecisionDenominator)
+{
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {10, 0, 0}, 2),
+                                              segment(LineType::Smooth, {0, 20, 0}, {10, 20, 0}, 2)};
+    PointMatrix flagged(3, 3);
+    flagged << 5, 0.2, 0, // on the sharp edge
+        5, 20.2, 0,       // on the smooth edge: not a false sharp detection
+        5, 10, 0;         // near nothing: a false detection of every type
+    const LineScore s = scoreFlaggedPoints(flagged, truth, options());
+    EXPECT_DOUBLE_EQ(of(s, LineType::Sharp).precision, 0.5);
+    EXPECT_DOUBLE_EQ(of(s, LineType::Smooth).precision, 0.5);
+    EXPECT_TRUE(std::isnan(s.closedness));
+}
+
+TEST(LineScore, BadInputIsRejected)
+{
+    LineScoreOptions o = options();
+    o.spacing = 0.0;
+    EXPECT_THROW(scoreLines({}, {}, o), std::invalid_argument);
+    TypedPolyline bad = square(LineType::Sharp, 1.0);
+    bad.points(1, 1) = std::nan("");
+    EXPECT_THROW(scoreLines({bad}, {}, options()), std::invalid_argument);
+    EXPECT_THROW(lineTypeFromName("crease"), std::invalid_argument);
+}
