@@ -38,9 +38,8 @@ PclNormals estimateNormals(const PointMatrix& P, const BaselineOptions& options)
     result.cloud = pcl::make_shared<Cloud>();
     result.cloud->resize(static_cast<size_t>(P.rows()));
     for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        (*result.cloud)[static_cast<size_t>(i)] =
-            pcl::PointXYZ(static_cast<float>(P(i, 0)), static_cast<float>(P(i, 1)),
-                          static_cast<float>(P(i, 2)));
+        (*result.cloud)[static_cast<size_t>(i)] = pcl::PointXYZ(
+            static_cast<float>(P(i, 0)), static_cast<float>(P(i, 1)), static_cast<float>(P(i, 2)));
     }
     result.tree = pcl::make_shared<Tree>();
     result.tree->setInputCloud(result.cloud);

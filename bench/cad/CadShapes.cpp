@@ -61,8 +61,8 @@ gp_Pnt midpoint(const BRepAdaptor_Curve& c)
 void check(bool done, const std::string& part, const char* step)
 {
     if (!done) {
-        throw std::runtime_error("OpenCASCADE could not build the part " + part + " (" + step
-                                 + ").");
+        throw std::runtime_error("OpenCASCADE could not build the part " + part + " (" + step +
+                                 ").");
     }
 }
 
@@ -75,8 +75,8 @@ TopoDS_Shape unified(const TopoDS_Shape& shape)
     return unify.Shape();
 }
 
-TopoDS_Shape fillet(const TopoDS_Shape& shape, const std::vector<TopoDS_Edge>& edges,
-                    double radius, const std::string& part)
+TopoDS_Shape fillet(const TopoDS_Shape& shape, const std::vector<TopoDS_Edge>& edges, double radius,
+                    const std::string& part)
 {
     check(!edges.empty(), part, "no edge to fillet");
     BRepFilletAPI_MakeFillet maker(shape);
@@ -98,12 +98,11 @@ CadShape boxFillets()
     s = fillet(s, edgesWhere(s, [](const auto& c) { return isLineAlong(c, gp::DZ()); }), 10.0,
                name);
     // The horizontal rims are now tangent chains of lines and arcs; a fillet follows the chain.
-    s = fillet(s,
-               edgesWhere(s,
-                          [](const auto& c) {
-                              return isLineAlong(c, gp::DX()) || isLineAlong(c, gp::DY());
-                          }),
-               6.0, name);
+    s = fillet(
+        s,
+        edgesWhere(
+            s, [](const auto& c) { return isLineAlong(c, gp::DX()) || isLineAlong(c, gp::DY()); }),
+        6.0, name);
     return {name,
             "box 100 x 80 x 50 mm, vertical edges filleted at 10 mm then the top and bottom "
             "rims at 6 mm (toroidal corner blends); smooth edges only",
@@ -136,8 +135,8 @@ CadShape variableFillet()
     const TopoDS_Shape box = BRepPrimAPI_MakeBox(120.0, 80.0, 40.0).Shape();
     const auto edges = edgesWhere(box, [](const BRepAdaptor_Curve& c) {
         const gp_Pnt m = midpoint(c);
-        return isLineAlong(c, gp::DX()) && std::abs(m.Y()) < selectTolerance
-               && std::abs(m.Z() - 40.0) < selectTolerance;
+        return isLineAlong(c, gp::DX()) && std::abs(m.Y()) < selectTolerance &&
+               std::abs(m.Z() - 40.0) < selectTolerance;
     });
     check(edges.size() == 1, name, "front top edge");
     BRepFilletAPI_MakeFillet maker(box);
@@ -167,10 +166,9 @@ CadShape bossBlend()
     s = fillet(s,
                edgesWhere(s,
                           [](const BRepAdaptor_Curve& c) {
-                              return c.GetType() == GeomAbs_Circle
-                                     && std::abs(c.Circle().Radius() - 22.0) < selectTolerance
-                                     && std::abs(c.Circle().Location().Z() - 15.0)
-                                            < selectTolerance;
+                              return c.GetType() == GeomAbs_Circle &&
+                                     std::abs(c.Circle().Radius() - 22.0) < selectTolerance &&
+                                     std::abs(c.Circle().Location().Z() - 15.0) < selectTolerance;
                           }),
                6.0, name);
     const gp_Ax2 holeAxis(gp_Pnt(60.0, 45.0, -1.0), gp::DZ());
@@ -195,7 +193,8 @@ CadShape plateHoles()
         check(cut.IsDone(), name, "cut hole");
         s = cut.Shape();
     }
-    return {name, "plate 120 x 80 x 10 mm with through holes of radius 5, 8 and 12 mm; sharp edges only",
+    return {name,
+            "plate 120 x 80 x 10 mm with through holes of radius 5, 8 and 12 mm; sharp edges only",
             unified(s), 0.0};
 }
 
@@ -211,8 +210,8 @@ CadShape openSheet()
     s = fillet(s,
                edgesWhere(s,
                           [](const BRepAdaptor_Curve& c) {
-                              return (isLineAlong(c, gp::DX()) || isLineAlong(c, gp::DY()))
-                                     && std::abs(midpoint(c).Z()) < selectTolerance;
+                              return (isLineAlong(c, gp::DX()) || isLineAlong(c, gp::DY())) &&
+                                     std::abs(midpoint(c).Z()) < selectTolerance;
                           }),
                8.0, name);
     TopoDS_Shell shell;
@@ -221,9 +220,9 @@ CadShape openSheet()
     int removed = 0;
     for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
         const BRepAdaptor_Surface surface(TopoDS::Face(f.Current()));
-        const bool top = surface.GetType() == GeomAbs_Plane
-                         && surface.Plane().Axis().Direction().IsParallel(gp::DZ(), 1e-9)
-                         && std::abs(surface.Plane().Location().Z() - 40.0) < selectTolerance;
+        const bool top = surface.GetType() == GeomAbs_Plane &&
+                         surface.Plane().Axis().Direction().IsParallel(gp::DZ(), 1e-9) &&
+                         std::abs(surface.Plane().Location().Z() - 40.0) < selectTolerance;
         if (top) {
             ++removed;
         } else {
@@ -244,15 +243,16 @@ CadShape closeFillets()
 {
     const std::string name = "close_fillets";
     const TopoDS_Shape plate = BRepPrimAPI_MakeBox(120.0, 80.0, 10.0).Shape();
-    const TopoDS_Shape rib = BRepPrimAPI_MakeBox(gp_Pnt(0.0, 32.0, 10.0), 120.0, 16.0, 25.0).Shape();
+    const TopoDS_Shape rib =
+        BRepPrimAPI_MakeBox(gp_Pnt(0.0, 32.0, 10.0), 120.0, 16.0, 25.0).Shape();
     BRepAlgoAPI_Fuse fuse(plate, rib);
     check(fuse.IsDone(), name, "fuse rib");
     TopoDS_Shape s = unified(fuse.Shape());
     const auto ribEdgeAt = [](double z) {
         return [z](const BRepAdaptor_Curve& c) {
             const gp_Pnt m = midpoint(c);
-            const bool onRibSide = std::abs(m.Y() - 32.0) < selectTolerance
-                                   || std::abs(m.Y() - 48.0) < selectTolerance;
+            const bool onRibSide = std::abs(m.Y() - 32.0) < selectTolerance ||
+                                   std::abs(m.Y() - 48.0) < selectTolerance;
             return isLineAlong(c, gp::DX()) && onRibSide && std::abs(m.Z() - z) < selectTolerance;
         };
     };
@@ -278,8 +278,8 @@ CadShape closeFillets()
 
 std::vector<std::string> cadShapeNames()
 {
-    return {"box_fillets", "box_chamfers",  "variable_fillet", "boss_blend",
-            "plate_holes", "open_sheet",    "close_fillets"};
+    return {"box_fillets", "box_chamfers", "variable_fillet", "boss_blend",
+            "plate_holes", "open_sheet",   "close_fillets"};
 }
 
 CadShape makeCadShape(const std::string& name)
@@ -307,15 +307,15 @@ CadShape makeCadShape(const std::string& name)
             return closeFillets();
         }
     } catch (const Standard_Failure& e) {
-        throw std::runtime_error("OpenCASCADE could not build the part " + name + ": "
-                                 + e.GetMessageString());
+        throw std::runtime_error("OpenCASCADE could not build the part " + name + ": " +
+                                 e.GetMessageString());
     }
     std::string known;
     for (const std::string& n : cadShapeNames()) {
         known += (known.empty() ? "" : ", ") + n;
     }
-    throw std::invalid_argument("Unknown benchmark part \"" + name + "\"; known parts: " + known
-                                + ".");
+    throw std::invalid_argument("Unknown benchmark part \"" + name + "\"; known parts: " + known +
+                                ".");
 }
 
 } // namespace featurelines::bench

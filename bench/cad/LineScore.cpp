@@ -16,16 +16,16 @@ constexpr double notDefined = std::numeric_limits<double>::quiet_NaN();
 void checkPositive(double value, const char* what)
 {
     if (!(value > 0.0) || !std::isfinite(value)) {
-        throw std::invalid_argument(std::string("Line scoring: ") + what
-                                    + " must be a positive number.");
+        throw std::invalid_argument(std::string("Line scoring: ") + what +
+                                    " must be a positive number.");
     }
 }
 
 void checkLine(const TypedPolyline& line, const char* side)
 {
     if (!line.points.allFinite()) {
-        throw std::invalid_argument(std::string("Line scoring: a ") + side
-                                    + " line has a NaN or infinite coordinate.");
+        throw std::invalid_argument(std::string("Line scoring: a ") + side +
+                                    " line has a NaN or infinite coordinate.");
     }
 }
 
@@ -70,9 +70,9 @@ long countNear(const std::vector<Eigen::Vector3d>& queries, const PointGrid& gri
 
 void finish(TypeScore& s, long matchedDetected, long matchedTruth)
 {
-    s.precision = s.detectedSamples > 0
-                      ? static_cast<double>(matchedDetected) / static_cast<double>(s.detectedSamples)
-                      : notDefined;
+    s.precision = s.detectedSamples > 0 ? static_cast<double>(matchedDetected) /
+                                              static_cast<double>(s.detectedSamples)
+                                        : notDefined;
     if (s.truthSamples == 0) {
         s.recall = notDefined;
         s.f1 = notDefined;
@@ -145,12 +145,12 @@ double closednessOf(const std::vector<TypedPolyline>& lines, double step, double
 std::string lineTypeName(LineType type)
 {
     switch (type) {
-        case LineType::Sharp:
-            return "sharp";
-        case LineType::Smooth:
-            return "smooth";
-        case LineType::Boundary:
-            return "boundary";
+    case LineType::Sharp:
+        return "sharp";
+    case LineType::Smooth:
+        return "smooth";
+    case LineType::Boundary:
+        return "boundary";
     }
     return "sharp";
 }
@@ -166,8 +166,8 @@ LineType lineTypeFromName(const std::string& name)
     if (name == "boundary") {
         return LineType::Boundary;
     }
-    throw std::invalid_argument("Unknown feature line type \"" + name
-                                + "\" (expected sharp, smooth or boundary).");
+    throw std::invalid_argument("Unknown feature line type \"" + name +
+                                "\" (expected sharp, smooth or boundary).");
 }
 
 PointMatrix resamplePolyline(const TypedPolyline& line, double step)

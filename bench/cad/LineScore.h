@@ -89,8 +89,7 @@ PointMatrix resamplePolyline(const TypedPolyline& line, double step);
 /// polylines). Throws std::invalid_argument when options.spacing or a factor is not a
 /// positive finite number, or a polyline has a NaN coordinate.
 LineScore scoreLines(const std::vector<TypedPolyline>& detected,
-                     const std::vector<TypedPolyline>& truth,
-                     const LineScoreOptions& options);
+                     const std::vector<TypedPolyline>& truth, const LineScoreOptions& options);
 
 /// Scores a per-point detector, which flags points but gives them no type: the flagged
 /// points F (#F by 3) are the samples of every type. For type T, a flagged point within the

@@ -17,19 +17,14 @@ class PointGrid
 {
 public:
     /// An empty grid answering queries of radius up to `cellSize` (> 0).
-    explicit PointGrid(double cellSize)
-        : cell(cellSize)
-    {}
+    explicit PointGrid(double cellSize) : cell(cellSize) {}
 
     /// Stores point `id` at position p.
-    void insert(const Eigen::Vector3d& p, int id)
-    {
-        cells[key(cellOf(p))].push_back({p, id});
-    }
+    void insert(const Eigen::Vector3d& p, int id) { cells[key(cellOf(p))].push_back({p, id}); }
 
     /// Calls visit(id, squaredDistance) for every stored point within `radius` of q and
     /// stops early when visit returns false. radius must not exceed the cell size.
-    template<class Visit>
+    template <class Visit>
     void forEachWithin(const Eigen::Vector3d& q, double radius, Visit visit) const
     {
         const Eigen::Vector3i c = cellOf(q);

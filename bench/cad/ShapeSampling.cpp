@@ -47,9 +47,9 @@ constexpr double propertyResolution = 1e-9;
 /// One triangle of the triangulation with what is needed to place a candidate in it.
 struct SurfaceTriangle
 {
-    int face;               // index into the face list
-    Eigen::Vector3d p[3];   // corners in space (location applied)
-    Eigen::Vector2d uv[3];  // corners in the face's (u, v)
+    int face;              // index into the face list
+    Eigen::Vector3d p[3];  // corners in space (location applied)
+    Eigen::Vector2d uv[3]; // corners in the face's (u, v)
 };
 
 Eigen::Vector3d toEigen(const gp_XYZ& p)
@@ -141,8 +141,8 @@ bool classifyTwoFaceEdge(const TopoDS_Edge& edge, const TopoDS_Face& f1, const T
     const int n = std::max(1, options.classificationSamples);
     for (int i = 0; i < n; ++i) {
         // Interior samples only: at the vertices other faces meet.
-        const double t = curve.FirstParameter()
-                         + (curve.LastParameter() - curve.FirstParameter()) * (i + 0.5) / n;
+        const double t = curve.FirstParameter() +
+                         (curve.LastParameter() - curve.FirstParameter()) * (i + 0.5) / n;
         const gp_Pnt p = curve.Value(t);
         const EdgeSideProperties a = edgeSide(edge, f1, s1, t, p);
         const EdgeSideProperties b = edgeSide(edge, f2, s2, t, p);
@@ -151,8 +151,8 @@ bool classifyTwoFaceEdge(const TopoDS_Edge& edge, const TopoDS_Face& f1, const T
         }
         angles.push_back(std::acos(std::clamp(a.normal.dot(b.normal), -1.0, 1.0)) * 180.0 / pi);
         curvatureGaps.push_back(std::max(std::abs(a.kMin - b.kMin), std::abs(a.kMax - b.kMax)));
-        curvatureScales.push_back(std::max({std::abs(a.kMin), std::abs(a.kMax), std::abs(b.kMin),
-                                            std::abs(b.kMax)}));
+        curvatureScales.push_back(
+            std::max({std::abs(a.kMin), std::abs(a.kMax), std::abs(b.kMin), std::abs(b.kMax)}));
     }
     if (angles.empty()) {
         return false;
@@ -187,8 +187,8 @@ TypedPolyline sampleEdge(const TopoDS_Edge& edge, LineType type, double step)
         }
     } else {
         for (int i = 0; i < count; ++i) {
-            const double t = curve.FirstParameter()
-                             + (curve.LastParameter() - curve.FirstParameter()) * i / (count - 1);
+            const double t = curve.FirstParameter() +
+                             (curve.LastParameter() - curve.FirstParameter()) * i / (count - 1);
             pts.push_back(toEigen(curve.Value(t).XYZ()));
         }
     }
@@ -252,7 +252,7 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
     for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
         const TopoDS_Face face = TopoDS::Face(ex.Current());
         TopLoc_Location loc;
-        const Handle(Poly_Triangulation) & mesh = BRep_Tool::Triangulation(face, loc);
+        const Handle(Poly_Triangulation)& mesh = BRep_Tool::Triangulation(face, loc);
         if (mesh.IsNull() || !mesh->HasUVNodes()) {
             throw std::runtime_error("OpenCASCADE left a face of the shape without a usable "
                                      "triangulation.");
@@ -301,8 +301,8 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
     for (long c = 0; c < candidates; ++c) {
         const double pick = unit(rng) * total;
         const size_t k = static_cast<size_t>(
-            std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), pick)
-            - cumulativeArea.begin());
+            std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), pick) -
+            cumulativeArea.begin());
         const SurfaceTriangle& tri = triangles[std::min(k, triangles.size() - 1)];
         // Uniform barycentric coordinates (square-root warp of two uniforms).
         const double s = std::sqrt(unit(rng));

@@ -173,9 +173,7 @@ Arguments parseArguments(int argc, char** argv)
 class JsonReader
 {
 public:
-    explicit JsonReader(std::string text)
-        : s(std::move(text))
-    {}
+    explicit JsonReader(std::string text) : s(std::move(text)) {}
 
     std::vector<TypedPolyline> readLines()
     {
@@ -270,9 +268,8 @@ private:
     void expect(char c)
     {
         if (peek() != c) {
-            throw std::invalid_argument(std::string("The lines file is not valid JSON: '") + c
-                                        + "' expected at character " + std::to_string(pos)
-                                        + ".");
+            throw std::invalid_argument(std::string("The lines file is not valid JSON: '") + c +
+                                        "' expected at character " + std::to_string(pos) + ".");
         }
         ++pos;
     }
@@ -309,7 +306,8 @@ private:
         const double v = std::strtod(begin, &end);
         if (end == begin) {
             throw std::invalid_argument("The lines file has a point coordinate that is not a "
-                                        "number, at character " + std::to_string(pos) + ".");
+                                        "number, at character " +
+                                        std::to_string(pos) + ".");
         }
         pos += static_cast<size_t>(end - begin);
         return v;
@@ -417,10 +415,9 @@ const std::vector<double> normalAngleSweep = {5.0, 10.0, 15.0, 20.0, 30.0, 45.0,
 struct Row
 {
     Row(std::string shape_, std::string noise_, std::string detector_)
-        : shape(std::move(shape_))
-        , noise(std::move(noise_))
-        , detector(std::move(detector_))
-    {}
+        : shape(std::move(shape_)), noise(std::move(noise_)), detector(std::move(detector_))
+    {
+    }
     std::string shape;
     std::string noise;
     std::string detector;
@@ -495,9 +492,9 @@ std::vector<std::string> scoreCells(const LineScore& s, bool available)
     return cells;
 }
 
-const std::vector<std::string> scoreHeader = {
-    "sharp P", "sharp R", "sharp F1", "smooth P", "smooth R", "smooth F1",
-    "bnd P",   "bnd R",   "bnd F1"};
+const std::vector<std::string> scoreHeader = {"sharp P",  "sharp R",  "sharp F1",
+                                              "smooth P", "smooth R", "smooth F1",
+                                              "bnd P",    "bnd R",    "bnd F1"};
 
 /// Mean of the defined values.
 double meanOf(const std::vector<double>& v)
@@ -571,8 +568,8 @@ int run(const Arguments& args)
     std::vector<std::vector<std::string>> partRows;
     const auto names = cadShapeNames();
     for (const std::string& name : args.shapes) {
-        const size_t shapeIndex = static_cast<size_t>(
-            std::find(names.begin(), names.end(), name) - names.begin());
+        const size_t shapeIndex =
+            static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
         const auto buildStart = std::chrono::steady_clock::now();
         const CadShape part = makeCadShape(name);
         const double area = shapeArea(part.shape);

@@ -145,8 +145,9 @@ TEST(LineScore, OpenLineThatReturnsToItsStartIsJoined)
 
 TEST(LineScore, FlaggedPointsNearAnotherTypeLeaveThePrecisionDenominator)
 {
-    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {10, 0, 0}, 2),
-                                              segment(LineType::Smooth, {0, 20, 0}, {10, 20, 0}, 2)};
+    const std::vector<TypedPolyline> truth = {
+        segment(LineType::Sharp, {0, 0, 0}, {10, 0, 0}, 2),
+        segment(LineType::Smooth, {0, 20, 0}, {10, 20, 0}, 2)};
     PointMatrix flagged(3, 3);
     flagged << 5, 0.2, 0, // on the sharp edge
         5, 20.2, 0,       // on the smooth edge: not a false sharp detection
