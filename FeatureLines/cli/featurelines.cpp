@@ -1,9 +1,395 @@
-// featurelines: command-line front end of the FeatureLines core (placeholder; commands follow).
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// featurelines: the core library's stages from the command line, for scripts and for checking
+// a cloud before it goes into FreeCAD. Each command is one row of the `commands` table.
+//
+// Exit codes: 0 success, 1 bad input data (unreadable file, too few points, ...), 2 a usage
+// error (unknown command or option, missing or absurd value). Errors print one line on stderr,
+// "featurelines: <reason>".
+#include <algorithm>
+#include <exception>
+#include <fstream>
 #include <iostream>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "FeatureLines/CloudIO.h"
+#include "FeatureLines/Curvature.h"
+#include "FeatureLines/HistogramThreshold.h"
+#include "FeatureLines/Neighbours.h"
+#include "FeatureLines/Normals.h"
+#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/cli/Arguments.h"
+#include "FeatureLines/cli/Json.h"
+
+namespace featurelines::cli {
+namespace {
+
+using Run = int (*)(const Arguments&);
+
+struct Command
+{
+    std::string name;
+    std::string summary;
+    /// What follows "featurelines NAME" in the usage line.
+    std::string synopsis;
+    std::vector<OptionSpec> options;
+    Run run;
+};
+
+// ---- options shared by several commands ---------------------------------------------------
+
+OptionSpec kOption()
+{
+    return {"--k", "N", "neighbours per point for normals and curvature, at least 3 (default 16)"};
+}
+OptionSpec threadsOption()
+{
+    return {"--threads", "T", "worker threads, 0 for all cores (default 0)"};
+}
+OptionSpec smoothOption()
+{
+    return {"--smooth", "N",
+            "Taubin smoothing passes over all points before the curvature, for noisy scans "
+            "(Sec. 2.4; default 0)"};
+}
+OptionSpec signedOption()
+{
+    return {"--signed", "",
+            "signed mean curvature; the sign follows the unoriented PCA normal, so it is only "
+            "meaningful within one consistently oriented region (default: |H|)"};
+}
+
+/// The single positional argument INPUT, or a UsageError.
+std::string inputPath(const Arguments& a)
+{
+    if (a.positional().empty()) {
+        throw UsageError("no INPUT point cloud given");
+    }
+    if (a.positional().size() > 1) {
+        throw UsageError("unexpected argument '" + a.positional()[1] + "'");
+    }
+    return a.positional()[0];
+}
+
+int neighbourCount(const Arguments& a) { return static_cast<int>(a.integer("--k", 16, 3, 10000)); }
+int threadCount(const Arguments& a) { return static_cast<int>(a.integer("--threads", 0, 0, 4096)); }
+
+/// The options of the curvature stages, read (and checked) before the cloud is.
+struct CurvatureSettings
+{
+    NeighbourOptions neighbours;
+    int smoothingPasses = 0;
+    bool isSigned = false;
+};
+
+CurvatureSettings curvatureSettings(const Arguments& a)
+{
+    CurvatureSettings s;
+    s.neighbours.k = neighbourCount(a);
+    s.neighbours.threads = threadCount(a);
+    s.smoothingPasses = static_cast<int>(a.integer("--smooth", 0, 0, 1000));
+    s.isSigned = a.has("--signed");
+    return s;
+}
+
+/// Sec. 2.1: mean curvature from the quadric fitted over the k nearest neighbours, after the
+/// optional smoothing of Sec. 2.4.
+Eigen::VectorXd curvatureOf(const CurvatureSettings& s, const PointMatrix& cloud)
+{
+    PointMatrix P = cloud;
+    Neighbourhoods N = nearestNeighbours(P, s.neighbours);
+    if (s.smoothingPasses > 0) {
+        SmoothingOptions sopt;
+        sopt.iterations = s.smoothingPasses;
+        std::vector<int> all(static_cast<std::size_t>(P.rows()));
+        std::iota(all.begin(), all.end(), 0);
+        P = laplacianSmooth(P, N, all, sopt);
+        // The points moved: the neighbourhoods of the smoothed cloud, not the noisy one.
+        N = nearestNeighbours(P, s.neighbours);
+    }
+    NormalOptions normalOpt;
+    normalOpt.threads = s.neighbours.threads;
+    const NormalEstimate normals = pcaNormals(P, N, normalOpt);
+    CurvatureOptions copt;
+    copt.signedCurvature = s.isSigned;
+    copt.threads = s.neighbours.threads;
+    return meanCurvature(P, normals.normals, N, copt);
+}
+
+// ---- info ---------------------------------------------------------------------------------
+
+int runInfo(const Arguments& a)
+{
+    const std::string input = inputPath(a);
+    const int requestedK = neighbourCount(a);
+    const int threads = threadCount(a);
+    const PointMatrix P = readCloud(input);
+    const Eigen::RowVector3d lo = P.colwise().minCoeff();
+    const Eigen::RowVector3d hi = P.colwise().maxCoeff();
+    const auto triple = [](const Eigen::RowVector3d& v) {
+        return Arguments::format(v.x()) + " " + Arguments::format(v.y()) + " " +
+               Arguments::format(v.z());
+    };
+    std::cout << "points: " << P.rows() << "\n"
+              << "bounding box min: " << triple(lo) << "\n"
+              << "bounding box max: " << triple(hi) << "\n"
+              << "size: " << triple(hi - lo) << "\n";
+    // info describes any cloud: with few points, fewer neighbours suffice for the spacing.
+    const Eigen::Index k = std::min<Eigen::Index>(requestedK, P.rows() - 1);
+    if (k < 3) {
+        std::cout << "mean spacing: unknown (fewer than 4 points)\n";
+        return 0;
+    }
+    NeighbourOptions nopt;
+    nopt.k = static_cast<int>(k);
+    nopt.threads = threads;
+    std::cout << "mean spacing: " << Arguments::format(meanSpacing(nearestNeighbours(P, nopt)))
+              << "\n";
+    return 0;
+}
+
+// ---- curvature ----------------------------------------------------------------------------
+
+int runCurvature(const Arguments& a)
+{
+    const std::string input = inputPath(a);
+    if (!a.has("--output")) {
+        throw UsageError("curvature needs an output file: -o FILE");
+    }
+    const std::string output = a.text("--output");
+    if (output.empty()) {
+        throw UsageError("the output file name is empty");
+    }
+    const CurvatureSettings settings = curvatureSettings(a);
+    const Eigen::VectorXd H = curvatureOf(settings, readCloud(input));
+
+    std::ofstream out(output);
+    if (!out) {
+        throw std::invalid_argument("cannot write '" + output + "'");
+    }
+    for (Eigen::Index i = 0; i < H.size(); ++i) {
+        out << Arguments::format(H[i]) << '\n';
+    }
+    out.close();
+    if (!out) {
+        throw std::invalid_argument("cannot write '" + output + "' (disk full?)");
+    }
+    return 0;
+}
+
+// ---- threshold ----------------------------------------------------------------------------
+
+int runThreshold(const Arguments& a)
+{
+    const std::string input = inputPath(a);
+    ThresholdOptions options;
+    options.bins = static_cast<int>(a.integer("--bins", options.bins, 2, 100000000));
+    options.outlierPercent = a.number("--outliers", options.outlierPercent, 0.0, 100.0, false);
+    options.minPeakPercent = a.number("--min-peak", options.minPeakPercent, 0.0, 100.0, true);
+    if (a.has("--single-run")) {
+        options.search = ThresholdSearch::SingleRun;
+    }
+    if (a.has("--below") && a.has("--above")) {
+        throw UsageError("--below and --above exclude each other");
+    }
+    const bool below = a.has("--below"), above = a.has("--above");
+    const double previous =
+        below   ? Arguments::parseNumber("--below", a.text("--below"))
+        : above ? Arguments::parseNumber("--above", a.text("--above"))
+                : 0.0;
+    const CurvatureSettings settings = curvatureSettings(a);
+
+    const Eigen::VectorXd H = curvatureOf(settings, readCloud(input));
+    const std::vector<double> values(H.data(), H.data() + H.size());
+    // Sec. 2.3: the next lower (higher) threshold searches only the values below (above) T.
+    const ThresholdResult r = below   ? findLowerThreshold(values, previous, options)
+                              : above ? findHigherThreshold(values, previous, options)
+                                      : findThreshold(values, options);
+    const long low = std::count_if(values.begin(), values.end(),
+                                   [&](double v) { return v <= r.threshold; });
+    const long high = static_cast<long>(values.size()) - low;
+
+    if (!a.has("--json")) {
+        std::cout << "threshold: " << Arguments::format(r.threshold) << "\n"
+                  << "ratio: " << Arguments::format(r.ratio) << "\n"
+                  << "low points: " << low << "\n"
+                  << "high points: " << high << "\n";
+        return 0;
+    }
+    const Histogram& h = r.histogram;
+    std::vector<double> edges(h.counts.size() + 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        edges[i] = h.minimum + static_cast<double>(i) * h.binWidth;
+    }
+    if (h.binWidth > 0.0) {
+        edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
+    }
+    using namespace json;
+    std::cout << "{"
+              << string("points") << ": " << number(static_cast<long>(values.size())) << ", "
+              << string("threshold") << ": " << number(r.threshold) << ", "
+              << string("ratio") << ": " << number(r.ratio) << ", "
+              << string("start_curv") << ": " << number(r.startCurv) << ", "
+              << string("joined_bins") << ": " << number(static_cast<long>(r.joinedBins)) << ", "
+              << string("peak_count") << ": " << number(r.peakCount) << ", "
+              << string("valley_count") << ": " << number(r.valleyCount) << ", "
+              << string("outlier_cut") << ": " << number(r.outlierCut) << ", "
+              << string("low_points") << ": " << number(low) << ", "
+              << string("high_points") << ": " << number(high) << ", "
+              << string("search") << ": "
+              << string(options.search == ThresholdSearch::SingleRun ? "single-run" : "all-starts")
+              << ", " << string("range") << ": "
+              << string(below ? "below" : above ? "above" : "all") << ", "
+              << string("histogram") << ": {" << string("minimum") << ": " << number(h.minimum)
+              << ", " << string("maximum") << ": " << number(h.maximum) << ", "
+              << string("bin_width") << ": " << number(h.binWidth) << ", " << string("counts")
+              << ": " << array(h.counts) << "}, " << string("bin_edges") << ": " << array(edges)
+              << "}\n";
+    return 0;
+}
+
+// ---- the table ----------------------------------------------------------------------------
+
+const std::vector<Command>& commands()
+{
+    static const std::vector<Command> table{
+        {"info",
+         "point count, bounding box and mean point spacing of a cloud",
+         "INPUT [--k N]",
+         {{"--k", "N", "neighbours searched for the spacing (default 16; fewer on tiny clouds)"},
+          threadsOption()},
+         runInfo},
+        {"curvature",
+         "mean curvature of every point, one value per line in input order (Sec. 2.1)",
+         "INPUT -o FILE [--k N] [--signed] [--smooth N]",
+         {{"--output", "FILE", "the file to write", "-o"}, kOption(), signedOption(),
+          smoothOption(), threadsOption()},
+         runCurvature},
+        {"threshold",
+         "curvature threshold by multi-resolution histogram analysis (Sec. 2.2-2.4)",
+         "INPUT [--below T | --above T] [--bins L] [--outliers PCT] [--single-run] [--k N] "
+         "[--json]",
+         {{"--below", "T", "next lower threshold: search only the values <= T (Sec. 2.3)"},
+          {"--above", "T", "next higher threshold: search only the values > T (Sec. 2.3)"},
+          {"--bins", "L", "start resolution L_start, at least 2 (default 50, Sec. 2.2)"},
+          {"--outliers", "PCT",
+           "drop this percentage of the highest curvatures first, 0 <= PCT < 100 (default 0, "
+           "Sec. 2.4)"},
+          {"--min-peak", "PCT",
+           "smallest peak a threshold may follow, in percent of the values (default 1)"},
+          {"--single-run", "", "start_curv = min(curv) only, the paper's short pseudo-code"},
+          {"--json", "", "print one JSON object with the histogram and its bin edges"},
+          kOption(), signedOption(), smoothOption(), threadsOption()},
+         runThreshold},
+    };
+    return table;
+}
+
+void printOverview(std::ostream& out)
+{
+    out << "usage: featurelines COMMAND [OPTIONS] INPUT\n"
+           "       featurelines COMMAND --help\n\n"
+           "Closed feature lines of point clouds (Demarsin et al. 2008).\n"
+           "INPUT: .xyz .txt .asc .csv (x y z per line), .ply or .pcd.\n\ncommands:\n";
+    for (const Command& c : commands()) {
+        out << "  " << c.name << std::string(12 - std::min<std::size_t>(11, c.name.size()), ' ')
+            << c.summary << "\n";
+    }
+}
+
+/// `text` broken at spaces into lines of at most 100 columns, lines after the first indented.
+std::string wrapped(const std::string& text, std::size_t indent)
+{
+    const std::size_t width = 100 - indent;
+    std::string out;
+    std::size_t lineStart = 0;
+    while (text.size() - lineStart > width) {
+        std::size_t cut = text.rfind(' ', lineStart + width);
+        if (cut == std::string::npos || cut <= lineStart) {
+            cut = text.find(' ', lineStart + width);
+            if (cut == std::string::npos) {
+                break;
+            }
+        }
+        out += text.substr(lineStart, cut - lineStart) + "\n" + std::string(indent, ' ');
+        lineStart = cut + 1;
+    }
+    return out + text.substr(lineStart);
+}
+
+void printCommandHelp(const Command& c)
+{
+    const std::string prefix = "usage: featurelines " + c.name + " ";
+    std::cout << prefix << wrapped(c.synopsis, prefix.size()) << "\n\n"
+              << c.summary << "\n\noptions:\n";
+    for (const OptionSpec& o : c.options) {
+        std::string left = o.shortName.empty() ? o.name : o.shortName + ", " + o.name;
+        if (!o.valueName.empty()) {
+            left += " " + o.valueName;
+        }
+        std::cout << "  " << left << std::string(20 - std::min<std::size_t>(18, left.size()), ' ')
+                  << wrapped(o.help, 22) << "\n";
+    }
+    std::cout << "  -h, --help          this text\n";
+}
+
+const Command* findCommand(const std::string& name)
+{
+    for (const Command& c : commands()) {
+        if (c.name == name) {
+            return &c;
+        }
+    }
+    return nullptr;
+}
+
+int runMain(const std::vector<std::string>& words)
+{
+    if (words.empty()) {
+        throw UsageError("no command given (featurelines --help lists them)");
+    }
+    if (words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
+        printOverview(std::cout);
+        return 0;
+    }
+    const Command* command = findCommand(words[0]);
+    if (!command) {
+        throw UsageError("unknown command '" + words[0] + "' (featurelines --help lists them)");
+    }
+    const std::vector<std::string> rest(words.begin() + 1, words.end());
+    if (std::find_if(rest.begin(), rest.end(), [](const std::string& w) {
+            return w == "--help" || w == "-h";
+        }) != rest.end()) {
+        printCommandHelp(*command);
+        return 0;
+    }
+    try {
+        return command->run(Arguments(rest, command->options));
+    } catch (const UsageError& e) {
+        throw UsageError(std::string(e.what()) + " (featurelines " + command->name +
+                         " --help)");
+    }
+}
+
+} // namespace
+} // namespace featurelines::cli
 
 int main(int argc, char** argv)
 {
-    (void)argv;
-    std::cerr << "usage: featurelines COMMAND [OPTIONS] INPUT\n";
-    return argc > 1 ? 2 : 0;
+    using namespace featurelines::cli;
+    try {
+        return runMain(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const UsageError& e) {
+        std::cerr << "featurelines: " << e.what() << std::endl;
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "featurelines: out of memory" << std::endl;
+        return 1;
+    } catch (const std::exception& e) {
+        // std::invalid_argument from the core: the input data, not the call, is at fault.
+        std::cerr << "featurelines: " << e.what() << std::endl;
+        return 1;
+    }
 }
