@@ -1,0 +1,394 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Performance benchmark of the core stages on seeded rounded cubes of 100k and 1M points, with
+// PCL's NormalEstimationOMP (and KdTreeFLANN for the kNN step) as the yardstick.
+// A program, not a test: timings depend on the machine. docs/PERFORMANCE.md shows a run.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <malloc.h>
+#include <omp.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "FeatureLines/Curvature.h"
+#include "FeatureLines/HistogramThreshold.h"
+#include "FeatureLines/Neighbours.h"
+#include "FeatureLines/Normals.h"
+#include "FeatureLines/RingNeighbourhood.h"
+#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/cli/Arguments.h"
+#include "PclYardstick.h"
+#include "SampledShapes.h"
+
+#ifndef FEATURELINES_BENCH_FLAGS
+#define FEATURELINES_BENCH_FLAGS "unknown"
+#endif
+
+namespace featurelines::bench {
+namespace {
+
+using cli::Arguments;
+using cli::OptionSpec;
+using cli::UsageError;
+
+// ---- the shape ----------------------------------------------------------------------------
+
+/// The benchmark's rounded cube: edge 40, fillet radius 6 (the proportions of the paper's
+/// Fig. 7), sampled at the spacing that gives about `points` points.
+constexpr double cubeEdge = 40.0;
+constexpr double cubeRadius = 6.0;
+constexpr unsigned cubeSeed = 2008;
+
+double spacingFor(long points)
+{
+    const double pi = std::acos(-1.0);
+    const double flat = cubeEdge - 2.0 * cubeRadius;
+    // Six flat squares, twelve quarter cylinders, eight eighth spheres.
+    const double area = 6.0 * flat * flat + 6.0 * pi * cubeRadius * flat +
+                        4.0 * pi * cubeRadius * cubeRadius;
+    return std::sqrt(area / static_cast<double>(points));
+}
+
+// ---- memory -------------------------------------------------------------------------------
+
+/// Resets the kernel's peak-RSS mark to the current RSS (Linux >= 4.0), so that ru_maxrss
+/// afterwards is the peak of one stage. False where that is not possible: then ru_maxrss is
+/// the peak since the program started.
+bool resetPeakRss()
+{
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    clear.close();
+    return static_cast<bool>(clear);
+}
+
+double peakRssMiB()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0; // KiB on Linux
+}
+
+double currentRssMiB()
+{
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
+}
+
+// ---- measuring ----------------------------------------------------------------------------
+
+struct Row
+{
+    std::string stage;
+    std::vector<double> seconds;
+    double outputMiB = 0.0;
+    double startRssMiB = 0.0;
+    double peakRssMiB = 0.0;
+
+    double median() const
+    {
+        std::vector<double> s(seconds);
+        std::sort(s.begin(), s.end());
+        const std::size_t n = s.size();
+        return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+    }
+};
+
+bool peakIsPerStage = true;
+
+/// Runs `stage` `runs` times; it returns the bytes of its output. The peak RSS is the largest
+/// over the runs (of the whole process: the cloud and the earlier stages' outputs included),
+/// the start RSS the one before the first run.
+Row measure(const std::string& name, int runs, const std::function<std::size_t()>& stage)
+{
+    Row row;
+    row.stage = name;
+    // Memory freed by earlier stages goes back to the system, or a stage reusing it would not
+    // show in its peak.
+    malloc_trim(0);
+    row.startRssMiB = currentRssMiB();
+    for (int r = 0; r < runs; ++r) {
+        malloc_trim(0);
+        peakIsPerStage = resetPeakRss() && peakIsPerStage;
+        const auto start = std::chrono::steady_clock::now();
+        const std::size_t bytes = stage();
+        const auto stop = std::chrono::steady_clock::now();
+        row.seconds.push_back(std::chrono::duration<double>(stop - start).count());
+        row.outputMiB = static_cast<double>(bytes) / (1024.0 * 1024.0);
+        row.peakRssMiB = std::max(row.peakRssMiB, peakRssMiB());
+    }
+    return row;
+}
+
+std::size_t bytesOf(const Neighbourhoods& N)
+{
+    return static_cast<std::size_t>(N.indices.size()) * sizeof(int) +
+           static_cast<std::size_t>(N.squaredDistances.size()) * sizeof(double);
+}
+
+struct Result
+{
+    long points = 0;
+    double spacing = 0.0;
+    std::vector<Row> rows;
+
+    const Row& row(const std::string& stage) const
+    {
+        return *std::find_if(rows.begin(), rows.end(),
+                             [&](const Row& r) { return r.stage == stage; });
+    }
+};
+
+const char* const knnStage = "nearestNeighbours k=16 (nanoflann)";
+const char* const normalsStage = "pcaNormals";
+const char* const curvatureStage = "meanCurvature";
+const char* const pclNormalsStage = "PCL NormalEstimationOMP k=16";
+const char* const pclKnnStage = "PCL KdTreeFLANN kNN k=16";
+
+Result runOne(long requestedPoints, int runs, int threads)
+{
+    Result result;
+    result.spacing = spacingFor(requestedPoints);
+    const shapes::Sample cube =
+        shapes::roundedCube(cubeEdge, cubeRadius, result.spacing, cubeSeed);
+    const PointMatrix& P = cube.points;
+    result.points = static_cast<long>(P.rows());
+    const auto n = static_cast<std::size_t>(P.rows());
+    std::cerr << "rounded cube: " << result.points << " points, spacing " << result.spacing
+              << "\n";
+
+    NeighbourOptions nopt;
+    nopt.k = 16;
+    nopt.threads = threads;
+    Neighbourhoods N;
+    NormalEstimate normals;
+    Eigen::VectorXd H;
+    RingNeighbourhoods rings;
+    PointMatrix smoothed;
+    std::vector<int> all(n);
+    std::iota(all.begin(), all.end(), 0);
+
+    // Each stage drops its previous output first, so the peak holds one copy of it.
+    result.rows.push_back(measure(knnStage, runs, [&] {
+        N = Neighbourhoods{};
+        N = nearestNeighbours(P, nopt);
+        return bytesOf(N);
+    }));
+    result.rows.push_back(measure(normalsStage, runs, [&] {
+        normals = NormalEstimate{};
+        NormalOptions o;
+        o.threads = threads;
+        normals = pcaNormals(P, N, o);
+        return n * (3 + 1) * sizeof(double);
+    }));
+    result.rows.push_back(measure(curvatureStage, runs, [&] {
+        H = Eigen::VectorXd{};
+        CurvatureOptions o;
+        o.threads = threads;
+        H = meanCurvature(P, normals.normals, N, o);
+        return n * sizeof(double);
+    }));
+    result.rows.push_back(measure("ringNeighbourhoods", runs, [&] {
+        rings = RingNeighbourhoods{};
+        RingOptions o;
+        o.threads = threads;
+        rings = ringNeighbourhoods(P, normals.normals, N, o);
+        return (rings.offsets.size() + rings.indices.size()) * sizeof(int);
+    }));
+    result.rows.push_back(measure("laplacianSmooth (5 Taubin passes, all points)", runs, [&] {
+        smoothed = PointMatrix{};
+        smoothed = laplacianSmooth(P, N, all);
+        return n * 3 * sizeof(double);
+    }));
+    const std::vector<double> values(H.data(), H.data() + H.size());
+    result.rows.push_back(measure("findThreshold (L_start 50, all starts)", runs, [&] {
+        const ThresholdResult r = findThreshold(values);
+        return r.histogram.counts.size() * sizeof(long);
+    }));
+
+    // The yardstick, on the same points converted once to PCL's type.
+    N = Neighbourhoods{};
+    rings = RingNeighbourhoods{};
+    smoothed = PointMatrix{};
+    const PclCloud pcl(P);
+    result.rows.push_back(
+        measure(pclNormalsStage, runs, [&] { return pcl.normalEstimationOmp(16, threads); }));
+    result.rows.push_back(
+        measure(pclKnnStage, runs, [&] { return pcl.kdTreeFlannKnn(16, threads); }));
+    return result;
+}
+
+// ---- reporting ----------------------------------------------------------------------------
+
+std::string fixed(double v, int digits)
+{
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    out << std::fixed << std::setprecision(digits) << v;
+    return out.str();
+}
+
+std::string firstLineOf(const std::string& path, const std::string& key)
+{
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.compare(0, key.size(), key) == 0) {
+            const auto colon = line.find(':');
+            std::string value = colon == std::string::npos ? line : line.substr(colon + 1);
+            value.erase(0, value.find_first_not_of(" \t"));
+            return value;
+        }
+    }
+    return "unknown";
+}
+
+std::string loadAverage()
+{
+    std::ifstream in("/proc/loadavg");
+    double one = 0, five = 0, fifteen = 0;
+    in >> one >> five >> fifteen;
+    return fixed(one, 2) + " " + fixed(five, 2) + " " + fixed(fifteen, 2);
+}
+
+void printMachine(std::ostream& out, int threads, int runs)
+{
+    out << "CPU: " << firstLineOf("/proc/cpuinfo", "model name") << ", "
+        << std::thread::hardware_concurrency() << " logical CPUs\n"
+        << "memory: " << firstLineOf("/proc/meminfo", "MemTotal") << "\n"
+        << "compiler: " << __VERSION__ << "; build: " << FEATURELINES_BENCH_FLAGS << "\n"
+        << "threads: " << (threads > 0 ? threads : omp_get_max_threads())
+        << ", runs per stage: " << runs << " (median shown)\n";
+}
+
+void printTable(std::ostream& out, const Result& r, bool markdown)
+{
+    const std::vector<std::string> header{"stage", "median s", "min..max s", "Mpoints/s",
+                                          "output MiB", "peak RSS MiB", "peak - start MiB"};
+    std::vector<std::vector<std::string>> cells;
+    for (const Row& row : r.rows) {
+        const auto [lo, hi] = std::minmax_element(row.seconds.begin(), row.seconds.end());
+        cells.push_back({row.stage, fixed(row.median(), 3), fixed(*lo, 3) + ".." + fixed(*hi, 3),
+                         fixed(r.points / row.median() / 1e6, 2), fixed(row.outputMiB, 1),
+                         fixed(row.peakRssMiB, 0),
+                         fixed(std::max(0.0, row.peakRssMiB - row.startRssMiB), 0)});
+    }
+    out << "\n" << (markdown ? "### " : "") << r.points << " points (rounded cube, spacing "
+        << fixed(r.spacing, 4) << ")\n\n";
+    std::vector<std::size_t> width(header.size());
+    for (std::size_t c = 0; c < header.size(); ++c) {
+        width[c] = header[c].size();
+        for (const auto& line : cells) {
+            width[c] = std::max(width[c], line[c].size());
+        }
+    }
+    const auto printLine = [&](const std::vector<std::string>& line) {
+        for (std::size_t c = 0; c < line.size(); ++c) {
+            const std::string pad(width[c] - line[c].size(), ' ');
+            out << (markdown ? "| " : (c ? "  " : ""))
+                << (c == 0 ? line[c] + pad : pad + line[c]) << (markdown ? " " : "");
+        }
+        out << (markdown ? "|" : "") << "\n";
+    };
+    printLine(header);
+    if (markdown) {
+        for (std::size_t c = 0; c < header.size(); ++c) {
+            out << "|" << (c ? std::string(width[c] + 1, '-') + ":" : std::string(width[c] + 2, '-'));
+        }
+        out << "|\n";
+    }
+    for (const auto& line : cells) {
+        printLine(line);
+    }
+
+    const double ours = r.row(knnStage).median() + r.row(normalsStage).median() +
+                        r.row(curvatureStage).median();
+    const double pcl = r.row(pclNormalsStage).median();
+    out << "\n(neighbours + normals + curvature) / PCL NormalEstimationOMP = " << fixed(ours, 3)
+        << " s / " << fixed(pcl, 3) << " s = " << fixed(ours / pcl, 2) << "\n"
+        << "kNN alone: nanoflann / PCL KdTreeFLANN = " << fixed(r.row(knnStage).median(), 3)
+        << " s / " << fixed(r.row(pclKnnStage).median(), 3) << " s = "
+        << fixed(r.row(knnStage).median() / r.row(pclKnnStage).median(), 2) << "\n";
+}
+
+const std::vector<OptionSpec>& optionSpecs()
+{
+    static const std::vector<OptionSpec> specs{
+        {"--points", "N", "one cloud of about N points (default: 100000, then 1000000)"},
+        {"--runs", "R", "runs per stage, the median is shown (default 3)"},
+        {"--threads", "T", "worker threads, 0 for OpenMP's default (default 0)"},
+        {"--markdown", "", "print the tables as Markdown"},
+        {"--help", "", "this text", "-h"},
+    };
+    return specs;
+}
+
+int run(const std::vector<std::string>& words)
+{
+    const Arguments a(words, optionSpecs());
+    if (a.has("--help")) {
+        std::cout << "usage: featurelines_bench [--points N] [--runs R] [--threads T] "
+                     "[--markdown]\n\noptions:\n";
+        for (const OptionSpec& o : optionSpecs()) {
+            std::cout << "  " << std::left << std::setw(14)
+                      << (o.name + (o.valueName.empty() ? "" : " " + o.valueName)) << o.help
+                      << "\n";
+        }
+        return 0;
+    }
+    if (!a.positional().empty()) {
+        throw UsageError("unexpected argument '" + a.positional()[0] + "'");
+    }
+    std::vector<long> sizes{100000, 1000000};
+    if (a.has("--points")) {
+        sizes = {a.integer("--points", 0, 100, 1000000000)};
+    }
+    const int runs = static_cast<int>(a.integer("--runs", 3, 1, 1000));
+    const int threads = static_cast<int>(a.integer("--threads", 0, 0, 4096));
+    const bool markdown = a.has("--markdown");
+
+    const std::string loadBefore = loadAverage();
+    std::vector<Result> results;
+    for (long points : sizes) {
+        results.push_back(runOne(points, runs, threads));
+    }
+    printMachine(std::cout, threads, runs);
+    std::cout << "load average (1, 5, 15 min) before: " << loadBefore
+              << ", after: " << loadAverage() << "\n";
+    if (!peakIsPerStage) {
+        std::cout << "peak RSS: since the program started (/proc/self/clear_refs unavailable)\n";
+    }
+    for (const Result& r : results) {
+        printTable(std::cout, r, markdown);
+    }
+    return 0;
+}
+
+} // namespace
+} // namespace featurelines::bench
+
+int main(int argc, char** argv)
+{
+    try {
+        return featurelines::bench::run(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const featurelines::cli::UsageError& e) {
+        std::cerr << "featurelines_bench: " << e.what() << std::endl;
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "featurelines_bench: " << e.what() << std::endl;
+        return 1;
+    }
+}
