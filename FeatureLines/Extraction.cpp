@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/Extraction.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "FeatureLines/CloudIO.h"
+
+namespace featurelines {
+
+namespace {
+
+void report(const std::function<bool(double, const std::string&)>& progress, double done,
+            const std::string& stage)
+{
+    if (progress && !progress(done, stage)) {
+        throw ExtractionCancelled();
+    }
+}
+
+/// Exact duplicates carry no geometry and make a neighbourhood of one repeated point: merged.
+PointMatrix distinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
+{
+    const Eigen::Index n = P.rows();
+    std::vector<int> order(static_cast<size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    auto less = [&](int a, int b) {
+        for (int c = 0; c < 3; ++c) {
+            if (P(a, c) != P(b, c)) {
+                return P(a, c) < P(b, c);
+            }
+        }
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), less);
+    inputToPoint.assign(static_cast<size_t>(n), -1);
+    std::vector<int> firstOf; // distinct point -> its first input row
+    for (size_t i = 0; i < order.size(); ++i) {
+        if (i == 0 || P.row(order[i]) != P.row(order[i - 1])) {
+            firstOf.push_back(order[i]);
+        }
+        inputToPoint[order[i]] = static_cast<int>(firstOf.size()) - 1;
+    }
+    // Keep the input order among distinct points: renumber by first occurrence.
+    std::vector<int> byInput(firstOf.size());
+    std::iota(byInput.begin(), byInput.end(), 0);
+    std::sort(byInput.begin(), byInput.end(), [&](int a, int b) { return firstOf[a] < firstOf[b]; });
+    std::vector<int> rank(firstOf.size());
+    PointMatrix distinct(static_cast<Eigen::Index>(firstOf.size()), 3);
+    for (size_t r = 0; r < byInput.size(); ++r) {
+        rank[byInput[r]] = static_cast<int>(r);
+        distinct.row(static_cast<Eigen::Index>(r)) = P.row(firstOf[byInput[r]]);
+    }
+    for (int& p : inputToPoint) {
+        p = rank[p];
+    }
+    return distinct;
+}
+
+void requireSurface(const PointMatrix& P)
+{
+    const Eigen::RowVector3d mean = P.colwise().mean();
+    const PointMatrix centred = P.rowwise() - mean;
+    const Eigen::Matrix3d covariance = centred.transpose() * centred / static_cast<double>(P.rows());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
+    if (!(lambda[2] > 0.0) || lambda[1] <= 1e-12 * lambda[2]) {
+        throw std::invalid_argument("point cloud: the points lie on a line (or on one point); "
+                                    "feature lines need a surface");
+    }
+}
+
+FeatureLine toFeatureLine(const Polyline& line, LineType type, int junctionOffset)
+{
+    FeatureLine f;
+    f.type = type;
+    f.closed = line.closed;
+    f.points = line.points;
+    f.startJunction = line.startJunction >= 0 ? line.startJunction + junctionOffset : -1;
+    f.endJunction = line.endJunction >= 0 ? line.endJunction + junctionOffset : -1;
+    return f;
+}
+
+void appendJunctions(PointMatrix& all, const PointMatrix& more)
+{
+    if (more.rows() == 0) {
+        return;
+    }
+    const Eigen::Index before = all.rows();
+    all.conservativeResize(before + more.rows(), 3);
+    all.bottomRows(more.rows()) = more;
+}
+
+std::vector<double> regionThresholdList(const RegionGeometry& g, const ExtractionOptions& options,
+                                        RegionReport& report)
+{
+    std::vector<double> thresholds;
+    switch (options.thresholdMode) {
+    case ThresholdMode::Explicit: {
+        auto it = options.regionThresholds.find(g.region);
+        thresholds = it != options.regionThresholds.end() ? it->second : options.thresholds;
+        break;
+    }
+    case ThresholdMode::First:
+        try {
+            thresholds.push_back(regionThreshold(g, options.smooth).threshold);
+        }
+        catch (const std::invalid_argument&) {
+            // A region of one curvature value (a plane) has no threshold: no smooth edges.
+        }
+        break;
+    case ThresholdMode::Automatic:
+        report.decisions = automaticThresholds(g, options.smooth);
+        for (const ThresholdDecision& d : report.decisions) {
+            if (d.accepted) {
+                thresholds.push_back(d.result.threshold);
+            }
+        }
+        break;
+    }
+    for (double t : thresholds) {
+        if (!std::isfinite(t) || t < 0.0) {
+            throw std::invalid_argument("curvature thresholds must be finite and not negative");
+        }
+    }
+    std::sort(thresholds.begin(), thresholds.end(), std::greater<double>());
+    thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
+    return thresholds;
+}
+
+/// Patches: the connected pieces (over the 1-rings) of a region's points that lie between the
+/// same two thresholds.
+int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds, int firstId,
+                 std::vector<int>& patchOfRegionPoint)
+{
+    const Eigen::Index n = g.points.rows();
+    std::vector<int> level(static_cast<size_t>(n), 0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        for (double t : thresholds) {
+            level[i] += g.curvature[i] > t ? 1 : 0;
+        }
+    }
+    patchOfRegionPoint.assign(static_cast<size_t>(n), -1);
+    int next = firstId;
+    std::vector<int> stack;
+    for (Eigen::Index s = 0; s < n; ++s) {
+        if (patchOfRegionPoint[s] >= 0) {
+            continue;
+        }
+        patchOfRegionPoint[s] = next;
+        stack.assign(1, static_cast<int>(s));
+        while (!stack.empty()) {
+            const int p = stack.back();
+            stack.pop_back();
+            for (const int* q = g.ring.begin(p); q != g.ring.end(p); ++q) {
+                if (patchOfRegionPoint[*q] < 0 && level[*q] == level[p]) {
+                    patchOfRegionPoint[*q] = next;
+                    stack.push_back(*q);
+                }
+            }
+        }
+        ++next;
+    }
+    return next;
+}
+
+} // namespace
+
+const char* lineTypeName(LineType type)
+{
+    switch (type) {
+    case LineType::Sharp:
+        return "sharp";
+    case LineType::Smooth:
+        return "smooth";
+    case LineType::Boundary:
+        return "boundary";
+    }
+    return "unknown";
+}
+
+int ExtractionResult::countLines(LineType type) const
+{
+    return static_cast<int>(std::count_if(lines.begin(), lines.end(),
+                                          [type](const FeatureLine& l) { return l.type == type; }));
+}
+
+CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options,
+                           const std::function<bool(double, const std::string&)>& progress)
+{
+    checkFinite(P, "point cloud");
+    CloudGeometry g;
+    g.points = distinctPoints(P, g.inputToPoint);
+    if (g.points.rows() <= options.k) {
+        throw std::invalid_argument(
+            "point cloud: " + std::to_string(g.points.rows()) + " distinct points (" +
+            std::to_string(P.rows() - g.points.rows()) + " duplicates merged); at least " +
+            std::to_string(options.k + 1) + " are needed for " + std::to_string(options.k) +
+            " neighbours per point");
+    }
+    requireSurface(g.points);
+    report(progress, 0.0, "neighbours");
+    g.neighbours = nearestNeighbours(g.points, options);
+    g.spacing = meanSpacing(g.neighbours);
+    report(progress, 0.3, "normals");
+    g.normals = pcaNormals(g.points, g.neighbours);
+    return g;
+}
+
+RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOptions& options)
+{
+    RegionAnalysis a;
+    const Eigen::Index n = cloud.points.rows();
+    report(options.progress, 0.4, "sharp edges");
+    if (options.sharpEdges) {
+        a.sharp = extractSharpEdges(cloud.points, cloud.normals.normals, cloud.neighbours,
+                                    cloud.spacing, options.sharp);
+    }
+    else {
+        a.sharp.isSharpCandidate.assign(static_cast<size_t>(n), 0);
+        a.sharp.isBoundary.assign(static_cast<size_t>(n), 0);
+        if (options.sharp.includeBoundary) {
+            const Boundary b = extractBoundary(cloud.points, cloud.normals.normals,
+                                               cloud.neighbours, cloud.spacing,
+                                               options.sharp.boundary);
+            a.sharp.network = b.network;
+            for (Polyline& line : a.sharp.network.lines) {
+                line.label = boundaryLineLabel;
+            }
+            a.sharp.isBoundary = b.isBoundary;
+        }
+    }
+    std::vector<Polyline> sharpLines;
+    for (const Polyline& line : a.sharp.network.lines) {
+        if (line.label == sharpLineLabel) {
+            sharpLines.push_back(line);
+        }
+    }
+    report(options.progress, 0.5, "smooth regions");
+    a.regions = divideSmoothRegions(cloud.points, cloud.neighbours, sharpLines,
+                                    a.sharp.isSharpCandidate, cloud.spacing, options.regions);
+    if (options.smoothEdges) {
+        for (int r = 0; r < a.regions.count(); ++r) {
+            report(options.progress, 0.5 + 0.3 * r / a.regions.count(),
+                   "curvature of smooth region " + std::to_string(r + 1));
+            a.geometry.push_back(analyseRegion(cloud.points, cloud.neighbours, a.regions.region,
+                                               a.regions.members[r], r, cloud.spacing,
+                                               options.smooth));
+        }
+    }
+    return a;
+}
+
+ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAnalysis& analysis,
+                                     const ExtractionOptions& options)
+{
+    ExtractionResult result;
+    result.spacing = cloud.spacing;
+    const Eigen::Index n = cloud.points.rows();
+
+    for (const Polyline& line : analysis.sharp.network.lines) {
+        result.lines.push_back(toFeatureLine(
+            line, line.label == boundaryLineLabel ? LineType::Boundary : LineType::Sharp, 0));
+    }
+    result.junctions = analysis.sharp.network.junctions;
+
+    std::vector<int> region(static_cast<size_t>(n), -1);
+    std::vector<int> patch(static_cast<size_t>(n), -1);
+    std::vector<PointLabel> label(static_cast<size_t>(n), PointLabel::Outside);
+    Eigen::VectorXd curvature = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+    int patches = 0;
+    for (size_t r = 0; r < analysis.geometry.size(); ++r) {
+        const RegionGeometry& g = analysis.geometry[r];
+        report(options.progress, 0.8 + 0.2 * static_cast<double>(r) / analysis.geometry.size(),
+               "smooth edges of region " + std::to_string(r + 1));
+        RegionReport rr;
+        rr.region = g.region;
+        rr.points = static_cast<int>(g.members.size());
+        rr.noise = g.noise;
+        rr.smoothed = g.smoothed;
+        try {
+            rr.histogram = regionThreshold(g, options.smooth).histogram;
+        }
+        catch (const std::invalid_argument&) {
+            // One curvature value only: an empty histogram tells the user there is no valley.
+        }
+        rr.thresholds = regionThresholdList(g, options, rr);
+
+        std::vector<PointLabel> firstLabels;
+        for (size_t level = 0; level < rr.thresholds.size(); ++level) {
+            const SmoothEdgeLevel edges = smoothEdgesAtThreshold(g, rr.thresholds[level], options.smooth);
+            const int offset = static_cast<int>(result.junctions.rows());
+            for (const Polyline& line : edges.network.lines) {
+                FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);
+                f.region = g.region;
+                f.level = static_cast<int>(level);
+                f.threshold = rr.thresholds[level];
+                result.lines.push_back(std::move(f));
+            }
+            appendJunctions(result.junctions, edges.network.junctions);
+            if (level == 0) {
+                firstLabels = edges.labels;
+            }
+        }
+        std::vector<int> patchOf;
+        patches = labelPatches(g, rr.thresholds, patches, patchOf);
+        for (size_t i = 0; i < g.members.size(); ++i) {
+            const int p = g.members[i];
+            region[p] = g.region;
+            patch[p] = patchOf[i];
+            label[p] = firstLabels.empty() ? PointLabel::Low : firstLabels[i];
+            curvature[p] = g.curvature[static_cast<Eigen::Index>(i)];
+        }
+        result.regions.push_back(std::move(rr));
+    }
+    if (!options.smoothEdges) {
+        for (Eigen::Index p = 0; p < n; ++p) {
+            region[p] = analysis.regions.region[p];
+        }
+    }
+
+    // Per input point, through the merge of duplicates.
+    const size_t inputs = cloud.inputToPoint.size();
+    result.region.resize(inputs);
+    result.patch.resize(inputs);
+    result.label.resize(inputs);
+    result.curvature.resize(static_cast<Eigen::Index>(inputs));
+    for (size_t i = 0; i < inputs; ++i) {
+        const int p = cloud.inputToPoint[i];
+        result.region[i] = region[p];
+        result.patch[i] = patch[p];
+        result.label[i] = label[p];
+        result.curvature[static_cast<Eigen::Index>(i)] = curvature[p];
+    }
+    report(options.progress, 1.0, "done");
+    return result;
+}
+
+ExtractionResult extractFeatureLines(const PointMatrix& P, const ExtractionOptions& options)
+{
+    const CloudGeometry cloud = analyseCloud(P, options.neighbours, options.progress);
+    const RegionAnalysis analysis = analyseRegions(cloud, options);
+    return extractFeatureLines(cloud, analysis, options);
+}
+
+} // namespace featurelines

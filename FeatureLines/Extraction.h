@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The whole method (Sec. 1.2 of the 2008 paper): from a raw cloud to a network of closed,
+// typed feature lines. Sharp edges and the boundary on the raw cloud; the cloud divided into
+// smooth regions; in each region its own smoothing, curvature histogram, thresholds and
+// smooth-edge lines, one closed set per threshold.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "FeatureLines/Normals.h"
+#include "FeatureLines/SharpEdges.h"
+#include "FeatureLines/SmoothEdges.h"
+#include "FeatureLines/SmoothRegions.h"
+
+namespace featurelines {
+
+enum class LineType : std::uint8_t
+{
+    Sharp,
+    Smooth,
+    Boundary,
+};
+
+/// "sharp", "smooth", "boundary".
+const char* lineTypeName(LineType type);
+
+struct FeatureLine
+{
+    LineType type = LineType::Sharp;
+    bool closed = false;
+    /// V  #V by 3 vertices; a closed line does not repeat its first vertex.
+    PointMatrix points;
+    /// Smooth lines: the smooth region, the index of their threshold in that region's list,
+    /// and the threshold. -1 / NaN for sharp and boundary lines.
+    int region = -1;
+    int level = -1;
+    double threshold = std::numeric_limits<double>::quiet_NaN();
+    /// Rows of ExtractionResult::junctions the ends sit on, -1 for none.
+    int startJunction = -1;
+    int endJunction = -1;
+};
+
+enum class ThresholdMode
+{
+    /// Per region, as many thresholds as have a significant valley (AutomaticThresholdOptions).
+    Automatic,
+    /// Per region, the first threshold of its histogram only (Sec. 2.3: "Typically ... one
+    /// threshold immediately after the first peak is sufficient").
+    First,
+    /// The thresholds given: ExtractionOptions::regionThresholds for a region listed there,
+    /// ExtractionOptions::thresholds for every other region.
+    Explicit,
+};
+
+struct ExtractionOptions
+{
+    NeighbourOptions neighbours;
+    bool sharpEdges = true;
+    /// Sharp edges, and the boundary of an open cloud (sharp.includeBoundary).
+    SharpEdgeOptions sharp;
+    bool smoothEdges = true;
+    SmoothRegionOptions regions;
+    SmoothEdgeOptions smooth;
+    ThresholdMode thresholdMode = ThresholdMode::Automatic;
+    std::vector<double> thresholds;
+    std::map<int, std::vector<double>> regionThresholds;
+    /// Called between stages with the share of the work done (0..1) and the stage's name;
+    /// returning false cancels the extraction (ExtractionCancelled is thrown).
+    std::function<bool(double, const std::string&)> progress;
+};
+
+struct ExtractionCancelled : std::runtime_error
+{
+    ExtractionCancelled()
+        : std::runtime_error("the feature line extraction was cancelled")
+    {}
+};
+
+/// The geometry every extraction of one cloud shares, whatever its thresholds: computed once
+/// and kept by a caller that recomputes with other options (the FreeCAD document object).
+struct CloudGeometry
+{
+    /// The distinct points (exact duplicates merged) and, per input point, its row here.
+    PointMatrix points;
+    std::vector<int> inputToPoint;
+    Neighbourhoods neighbours;
+    NormalEstimate normals;
+    double spacing = 0.0;
+};
+
+/// Validates the cloud (finite, enough distinct points) and computes neighbours, normals and
+/// spacing. Throws std::invalid_argument naming the problem.
+CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options = {},
+                           const std::function<bool(double, const std::string&)>& progress = {});
+
+struct RegionReport
+{
+    int region = -1;
+    int points = 0;
+    double noise = 0.0;
+    bool smoothed = false;
+    /// The thresholds applied, high to low, and the curvature histogram the first search ran
+    /// on (what a user interface draws).
+    std::vector<double> thresholds;
+    Histogram histogram;
+    /// Automatic mode: every threshold weighed and why it was accepted or not.
+    std::vector<ThresholdDecision> decisions;
+};
+
+struct ExtractionResult
+{
+    std::vector<FeatureLine> lines;
+    /// J  #J by 3 points where three or more line ends meet.
+    PointMatrix junctions;
+    double spacing = 0.0;
+    /// Per input point: its smooth region (-1 on the band of a sharp edge), its patch (points
+    /// of one region between the same two thresholds, connected; -1 off every region), its
+    /// Sec. 3 label at the region's first threshold (Low where the region has none;
+    /// Outside off every region), and its curvature in the region (NaN off every region).
+    std::vector<int> region;
+    std::vector<int> patch;
+    std::vector<PointLabel> label;
+    Eigen::VectorXd curvature;
+    std::vector<RegionReport> regions;
+    int countLines(LineType type) const;
+};
+
+/// The second shared step: sharp edges and boundary, the smooth regions they enclose, and each
+/// region's own geometry (smoothing, normals, 1-rings, curvature). It depends on the options
+/// of those stages only, so a change of thresholds reuses it.
+struct RegionAnalysis
+{
+    SharpEdges sharp;
+    SmoothRegions regions;
+    std::vector<RegionGeometry> geometry;
+};
+
+RegionAnalysis analyseRegions(const CloudGeometry& geometry, const ExtractionOptions& options = {});
+
+/// The last step: thresholds per region, labels, clusters and smooth-edge lines, merged with
+/// the sharp and boundary lines into one result.
+ExtractionResult extractFeatureLines(const CloudGeometry& geometry, const RegionAnalysis& regions,
+                                     const ExtractionOptions& options = {});
+
+/// All three steps on a cloud. Throws std::invalid_argument for bad input or options and
+/// ExtractionCancelled when the progress callback asks to stop.
+ExtractionResult extractFeatureLines(const PointMatrix& P, const ExtractionOptions& options = {});
+
+} // namespace featurelines

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/SmoothRegions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace featurelines {
+
+namespace {
+
+/// Samples of the sharp lines in a uniform hash grid, to tell which points lie in the band.
+class LineBand
+{
+public:
+    LineBand(const std::vector<Polyline>& lines, double width)
+        : width_(width)
+    {
+        const double step = 0.5 * width;
+        for (const Polyline& line : lines) {
+            const Eigen::Index n = line.points.rows();
+            const Eigen::Index segments = line.closed ? n : n - 1;
+            if (n == 1) {
+                insert(line.points.row(0));
+            }
+            for (Eigen::Index s = 0; s < segments; ++s) {
+                const Eigen::RowVector3d a = line.points.row(s);
+                const Eigen::RowVector3d b = line.points.row((s + 1) % n);
+                const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
+                for (int j = 0; j <= pieces; ++j) {
+                    insert(a + (b - a) * (static_cast<double>(j) / pieces));
+                }
+            }
+        }
+    }
+
+    bool contains(const Eigen::RowVector3d& p) const
+    {
+        const Key c = cell(p);
+        for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dz = -1; dz <= 1; ++dz) {
+                    auto it = cells_.find(Key{c.x + dx, c.y + dy, c.z + dz});
+                    if (it == cells_.end()) {
+                        continue;
+                    }
+                    for (const Eigen::RowVector3d& s : it->second) {
+                        if ((s - p).squaredNorm() < width_ * width_) {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    bool empty() const { return cells_.empty(); }
+
+private:
+    struct Key
+    {
+        long long x, y, z;
+        bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
+    };
+    struct KeyHash
+    {
+        size_t operator()(const Key& k) const
+        {
+            return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+        }
+    };
+
+    Key cell(const Eigen::RowVector3d& p) const
+    {
+        return Key{static_cast<long long>(std::floor(p.x() / width_)),
+                   static_cast<long long>(std::floor(p.y() / width_)),
+                   static_cast<long long>(std::floor(p.z() / width_))};
+    }
+    void insert(const Eigen::RowVector3d& p) { cells_[cell(p)].push_back(p); }
+
+    double width_;
+    std::unordered_map<Key, std::vector<Eigen::RowVector3d>, KeyHash> cells_;
+};
+
+} // namespace
+
+SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
+                                  const std::vector<Polyline>& sharpLines,
+                                  const std::vector<char>& sharpCandidate, double spacing,
+                                  const SmoothRegionOptions& options)
+{
+    const Eigen::Index n = P.rows();
+    if (N.size() != n) {
+        throw std::invalid_argument("divideSmoothRegions: points and neighbourhoods differ in size");
+    }
+    if (!sharpCandidate.empty() && static_cast<Eigen::Index>(sharpCandidate.size()) != n) {
+        throw std::invalid_argument("divideSmoothRegions: points and candidate flags differ in size");
+    }
+    if (!(spacing > 0.0) || !std::isfinite(spacing)) {
+        throw std::invalid_argument("divideSmoothRegions: the point spacing must be positive");
+    }
+    if (!(options.bandWidth >= 0.0) || options.minRegionNeighbours < 5 ||
+        options.minRegionNeighbours > N.k() || options.minRegionPoints < 0) {
+        throw std::invalid_argument(
+            "divideSmoothRegions: band width must be >= 0, region neighbours in [5, k], "
+            "region points >= 0");
+    }
+
+    // 1. Eligible points: off the band and not sharp candidates.
+    std::vector<int> label(static_cast<size_t>(n), -1);
+    const LineBand band(sharpLines, options.bandWidth * spacing);
+    std::vector<char> eligible(static_cast<size_t>(n), 1);
+#pragma omp parallel for schedule(static)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const bool candidate = !sharpCandidate.empty() && sharpCandidate[i];
+        eligible[i] = !candidate && (band.empty() || !band.contains(P.row(i)));
+    }
+
+    // 2. Connected components of the kNN graph over eligible points.
+    std::vector<int> component(static_cast<size_t>(n), -1);
+    std::vector<int> sizes;
+    std::vector<int> stack;
+    for (Eigen::Index s = 0; s < n; ++s) {
+        if (!eligible[s] || component[s] >= 0) {
+            continue;
+        }
+        const int id = static_cast<int>(sizes.size());
+        sizes.push_back(0);
+        component[s] = id;
+        stack.assign(1, static_cast<int>(s));
+        while (!stack.empty()) {
+            const int p = stack.back();
+            stack.pop_back();
+            ++sizes[id];
+            for (int j = 0; j < N.k(); ++j) {
+                const int q = N.indices(p, j);
+                if (eligible[q] && component[q] < 0) {
+                    component[q] = id;
+                    stack.push_back(q);
+                }
+            }
+        }
+    }
+
+    // 3. Points that see too few of their own region, then regions too small to be regions.
+    std::vector<char> tooFewInside(static_cast<size_t>(n), 0);
+#pragma omp parallel for schedule(static)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (component[i] < 0) {
+            continue;
+        }
+        int inside = 0;
+        for (int j = 0; j < N.k(); ++j) {
+            inside += component[N.indices(i, j)] == component[i] ? 1 : 0;
+        }
+        tooFewInside[i] = inside < options.minRegionNeighbours;
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (tooFewInside[i]) {
+            --sizes[component[i]];
+            component[i] = -1;
+        }
+    }
+    const int minPoints = options.minRegionPoints > 0 ? options.minRegionPoints : 2 * N.k();
+    std::vector<int> order(sizes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sizes[a] > sizes[b]; });
+    std::vector<int> renumber(sizes.size(), -1);
+    SmoothRegions result;
+    for (int c : order) {
+        if (sizes[c] >= minPoints) {
+            renumber[c] = result.count();
+            result.members.emplace_back();
+            result.members.back().reserve(static_cast<size_t>(sizes[c]));
+        }
+    }
+    result.region.assign(static_cast<size_t>(n), -1);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (component[i] >= 0 && renumber[component[i]] >= 0) {
+            result.region[i] = renumber[component[i]];
+            result.members[result.region[i]].push_back(static_cast<int>(i));
+        }
+    }
+    return result;
+}
+
+Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<int>& region,
+                                    const std::vector<int>& members, int regionId)
+{
+    if (static_cast<Eigen::Index>(region.size()) != N.size()) {
+        throw std::invalid_argument("regionNeighbourhoods: region labels and neighbourhoods differ in size");
+    }
+    std::unordered_map<int, int> local;
+    local.reserve(members.size() * 2);
+    for (size_t m = 0; m < members.size(); ++m) {
+        local.emplace(members[m], static_cast<int>(m));
+    }
+    const int k = N.k();
+    Neighbourhoods sub;
+    sub.indices.resize(static_cast<Eigen::Index>(members.size()), k);
+    sub.squaredDistances.resize(static_cast<Eigen::Index>(members.size()), k);
+    for (size_t m = 0; m < members.size(); ++m) {
+        const int p = members[m];
+        int filled = 0;
+        for (int j = 0; j < k; ++j) {
+            const int q = N.indices(p, j);
+            if (region[q] == regionId) {
+                sub.indices(m, filled) = local.at(q);
+                sub.squaredDistances(m, filled) = N.squaredDistances(p, j);
+                ++filled;
+            }
+        }
+        if (filled == 0) {
+            throw std::invalid_argument("regionNeighbourhoods: a region point has no neighbour in its region");
+        }
+        // Sec. 2.1 fits over k neighbours; repeating the nearest in-region ones keeps the
+        // row shape and only re-weights a point whose neighbourhood the band cut.
+        for (int j = filled, r = 0; j < k; ++j, r = (r + 1) % filled) {
+            sub.indices(m, j) = sub.indices(m, r);
+            sub.squaredDistances(m, j) = sub.squaredDistances(m, r);
+        }
+    }
+    return sub;
+}
+
+} // namespace featurelines

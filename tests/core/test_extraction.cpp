@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The whole method on shapes whose feature lines are known: a cube's twelve edges, a rounded
+// cube's fillet borders (Fig. 7 b), a plane, a sphere, an open sheet; and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "FeatureLines/Extraction.h"
+#include "SampledShapes.h"
+
+using namespace featurelines;
+
+namespace {
+
+std::vector<const FeatureLine*> linesOf(const ExtractionResult& r, LineType type, int level = -1)
+{
+    std::vector<const FeatureLine*> out;
+    for (const FeatureLine& l : r.lines) {
+        if (l.type == type && (level < 0 || l.level == level)) {
+            out.push_back(&l);
+        }
+    }
+    return out;
+}
+
+// Distance from p to the border of the flat square of the rounded cube's face with the given
+// axis and side: the tangent line between that face and its fillets.
+double distanceToFlatBorder(const Eigen::RowVector3d& p, int axis, double side, double half,
+                            double a)
+{
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const double du = std::abs(p[u]), dv = std::abs(p[v]);
+    // Closest point on the square outline max(|u|, |v|) = a in the plane p[axis] = side * half.
+    double cu = std::min(du, a), cv = std::min(dv, a);
+    if (std::max(du, dv) < a) {
+        (a - du < a - dv) ? cu = a : cv = a;
+    }
+    return std::sqrt((du - cu) * (du - cu) + (dv - cv) * (dv - cv) +
+                     (p[axis] - side * half) * (p[axis] - side * half));
+}
+
+} // namespace
+
+TEST(Extraction, CubeGivesTwelveSharpEdgesEnclosingSixFaces)
+{
+    const shapes::Sample cube = shapes::cube(20.0, 0.5, 11);
+    const ExtractionResult r = extractFeatureLines(cube.points);
+    EXPECT_EQ(r.countLines(LineType::Sharp), 12);
+    EXPECT_EQ(r.countLines(LineType::Boundary), 0) << "a closed surface has no boundary";
+    EXPECT_EQ(r.countLines(LineType::Smooth), 0) << "flat faces have no curvature valley";
+    EXPECT_EQ(r.junctions.rows(), 8);
+    // The sharp lines divide the cube into its six faces (Sec. 1.2: smooth regions).
+    ASSERT_EQ(r.regions.size(), 6u);
+    std::vector<std::set<int>> facesOfRegion(6);
+    for (size_t i = 0; i < cube.part.size(); ++i) {
+        if (r.region[i] >= 0) {
+            facesOfRegion[r.region[i]].insert(cube.part[i]);
+        }
+    }
+    for (const std::set<int>& faces : facesOfRegion) {
+        EXPECT_EQ(faces.size(), 1u) << "a region is one face";
+    }
+}
+
+TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
+{
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
+    const ExtractionResult r = extractFeatureLines(s.points);
+    EXPECT_EQ(r.countLines(LineType::Sharp), 0) << "fillets of radius 12 spacings are smooth";
+    ASSERT_EQ(r.regions.size(), 1u);
+    ASSERT_EQ(r.regions[0].thresholds.size(), 2u) << "planes | fillets | corners";
+    const double tau1 = r.regions[0].thresholds[0], tau2 = r.regions[0].thresholds[1];
+    EXPECT_GT(tau1, 1.0 / (2 * radius));
+    EXPECT_LT(tau1, 1.0 / radius);
+    EXPECT_GT(tau2, 0.0);
+    EXPECT_LT(tau2, 1.0 / (2 * radius));
+
+    const double half = edge / 2, a = half - radius;
+    // tau1: one closed loop around each of the 8 spherical corners, on the corner|fillet border.
+    const auto corners = linesOf(r, LineType::Smooth, 0);
+    EXPECT_EQ(corners.size(), 8u);
+    for (const FeatureLine* l : corners) {
+        EXPECT_TRUE(l->closed);
+        const Eigen::RowVector3d c = l->points.colwise().mean();
+        const Eigen::RowVector3d centre(std::copysign(a, c.x()), std::copysign(a, c.y()),
+                                        std::copysign(a, c.z()));
+        for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
+            const Eigen::RowVector3d d = l->points.row(i) - centre;
+            EXPECT_NEAR(d.norm(), radius, 3 * h) << "on the corner sphere";
+            EXPECT_LT(d.cwiseAbs().minCoeff(), 3 * h) << "on a corner|fillet tangent arc";
+        }
+    }
+    // tau2: one closed loop around each of the 6 flat faces, on the plane|fillet border.
+    const auto faces = linesOf(r, LineType::Smooth, 1);
+    EXPECT_EQ(faces.size(), 6u);
+    for (const FeatureLine* l : faces) {
+        EXPECT_TRUE(l->closed);
+        const Eigen::RowVector3d c = l->points.colwise().mean();
+        Eigen::Index axis;
+        c.cwiseAbs().maxCoeff(&axis);
+        const double side = c[axis] > 0 ? 1.0 : -1.0;
+        for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
+            EXPECT_LT(distanceToFlatBorder(l->points.row(i), static_cast<int>(axis), side, half, a),
+                      3 * h);
+        }
+    }
+}
+
+TEST(Extraction, NoisyCubeStillGivesTwelveSharpEdges)
+{
+    shapes::Sample cube = shapes::cube(20.0, 0.5, 3);
+    shapes::addNormalNoise(cube, 0.3 * 0.5, 4);
+    const ExtractionResult r = extractFeatureLines(cube.points);
+    EXPECT_EQ(r.countLines(LineType::Sharp), 12);
+    EXPECT_EQ(r.junctions.rows(), 8);
+    EXPECT_EQ(r.countLines(LineType::Smooth), 0) << "noise on a plane is no patch";
+}
+
+TEST(Extraction, SphereHasNoFeatureLines)
+{
+    const shapes::Sample sphere = shapes::sphere(10.0, 0.4, 2);
+    const ExtractionResult r = extractFeatureLines(sphere.points);
+    EXPECT_TRUE(r.lines.empty());
+    ASSERT_EQ(r.regions.size(), 1u);
+    EXPECT_TRUE(r.regions[0].thresholds.empty()) << "one curvature level, no valley";
+}
+
+TEST(Extraction, OpenPlaneGivesItsBoundaryOnly)
+{
+    const shapes::Sample plane = shapes::plane(20.0, 0.5, 9);
+    const ExtractionResult r = extractFeatureLines(plane.points);
+    EXPECT_EQ(r.countLines(LineType::Sharp), 0);
+    EXPECT_EQ(r.countLines(LineType::Smooth), 0);
+    ASSERT_EQ(r.countLines(LineType::Boundary), 1);
+    const FeatureLine& b = *linesOf(r, LineType::Boundary)[0];
+    EXPECT_TRUE(b.closed);
+    for (Eigen::Index i = 0; i < b.points.rows(); ++i) {
+        const double rim = std::max(std::abs(b.points(i, 0)), std::abs(b.points(i, 1)));
+        EXPECT_NEAR(rim, 10.0, 1.5) << "on the square's rim";
+    }
+
+    ExtractionOptions noBoundary;
+    noBoundary.sharp.includeBoundary = false;
+    EXPECT_TRUE(extractFeatureLines(plane.points, noBoundary).lines.empty());
+}
+
+TEST(Extraction, ExplicitThresholdsAreAppliedAsGiven)
+{
+    const shapes::Sample s = shapes::roundedCube(40.0, 6.0, 0.5, 8);
+    ExtractionOptions options;
+    options.thresholdMode = ThresholdMode::Explicit;
+    options.thresholds = {0.75 / 6.0}; // between fillets (1/12) and corners (1/6)
+    const ExtractionResult r = extractFeatureLines(s.points, options);
+    ASSERT_EQ(r.regions.size(), 1u);
+    ASSERT_EQ(r.regions[0].thresholds.size(), 1u);
+    EXPECT_DOUBLE_EQ(r.regions[0].thresholds[0], 0.75 / 6.0);
+    EXPECT_EQ(r.countLines(LineType::Smooth), 8) << "one loop per corner";
+}
+
+TEST(Extraction, DuplicatesAreMergedAndReportedPerInputPoint)
+{
+    const shapes::Sample cube = shapes::cube(20.0, 0.5, 1);
+    PointMatrix doubled(2 * cube.points.rows(), 3);
+    doubled << cube.points, cube.points;
+    const ExtractionResult r = extractFeatureLines(doubled);
+    EXPECT_EQ(r.countLines(LineType::Sharp), 12);
+    ASSERT_EQ(r.region.size(), static_cast<size_t>(doubled.rows()));
+    for (Eigen::Index i = 0; i < cube.points.rows(); ++i) {
+        EXPECT_EQ(r.region[i], r.region[i + cube.points.rows()]);
+    }
+}
+
+TEST(Extraction, CancelStopsTheRun)
+{
+    const shapes::Sample cube = shapes::cube(10.0, 0.5, 1);
+    ExtractionOptions options;
+    options.progress = [](double done, const std::string&) { return done < 0.35; };
+    EXPECT_THROW(extractFeatureLines(cube.points, options), ExtractionCancelled);
+}
+
+TEST(Extraction, BadCloudsAreRefusedWithAMessage)
+{
+    auto message = [](const PointMatrix& P) -> std::string {
+        try {
+            extractFeatureLines(P);
+        }
+        catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_NE(message(PointMatrix(0, 3)).find("points"), std::string::npos);
+
+    PointMatrix tiny = shapes::plane(2.0, 0.5, 1).points.topRows(10);
+    EXPECT_NE(message(tiny).find("at least 17"), std::string::npos);
+
+    PointMatrix line(100, 3);
+    for (int i = 0; i < 100; ++i) {
+        line.row(i) << i * 0.1, 2 * i * 0.1, 0.0;
+    }
+    EXPECT_NE(message(line).find("line"), std::string::npos);
+
+    PointMatrix same = PointMatrix::Ones(500, 3);
+    EXPECT_NE(message(same).find("distinct"), std::string::npos);
+
+    PointMatrix nan = shapes::plane(5.0, 0.5, 1).points;
+    nan(7, 1) = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(message(nan).find("point 8"), std::string::npos);
+}
