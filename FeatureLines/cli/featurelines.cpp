@@ -185,7 +185,8 @@ int runThreshold(const Arguments& a)
 {
     const std::string input = inputPath(a);
     ThresholdOptions options;
-    options.bins = static_cast<int>(a.integer("--bins", options.bins, 2, 100000000));
+    // The all-starts search costs O(L^2): a million bins is already minutes.
+    options.bins = static_cast<int>(a.integer("--bins", options.bins, 2, 1000000));
     options.outlierPercent = a.number("--outliers", options.outlierPercent, 0.0, 100.0, false);
     options.minPeakPercent = a.number("--min-peak", options.minPeakPercent, 0.0, 100.0, true);
     if (a.has("--single-run")) {
@@ -273,7 +274,7 @@ const std::vector<Command>& commands()
          "[--json]",
          {{"--below", "T", "next lower threshold: search only the values <= T (Sec. 2.3)"},
           {"--above", "T", "next higher threshold: search only the values > T (Sec. 2.3)"},
-          {"--bins", "L", "start resolution L_start, at least 2 (default 50, Sec. 2.2)"},
+          {"--bins", "L", "start resolution L_start, 2 to 1000000 (default 50, Sec. 2.2)"},
           {"--outliers", "PCT",
            "drop this percentage of the highest curvatures first, 0 <= PCT < 100 (default 0, "
            "Sec. 2.4)"},

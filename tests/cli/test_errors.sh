@@ -43,6 +43,7 @@ expect 2 "--k needs a whole number, got '16.5'" curvature "$good" -o "$work/h" -
 expect 2 "--k must be at least 3" threshold "$good" --k 2
 expect 2 "--bins must be at least 2" threshold "$good" --bins 1
 expect 2 "--bins needs a whole number" threshold "$good" --bins=
+expect 2 "--bins must be at least 2 and at most 1000000" threshold "$good" --bins 2000000
 expect 2 "--outliers must be at least 0 and below 100" threshold "$good" --outliers 100
 expect 2 "--outliers must be at least 0 and below 100" threshold "$good" --outliers -1
 expect 2 "--outliers needs a finite number, got 'nan'" threshold "$good" --outliers nan
