@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The graph of candidate clusters turned into closed polylines: G_all, G_extended, the pruned
+// minimum spanning tree, pruning of short branches and reconnection of line ends (Demarsin et
+// al. 2007, reused for smooth edges in Sec. 3 of the 2008 paper: "a graph is built connecting
+// neighboring clusters ... processed using similar operations as for the sharp edges").
+//
+// The stage is generic: it knows nothing of normals or curvature. Its input is a partition of
+// the cloud into clusters, some of which are marked as candidates (the small clusters of the
+// first-order segmentation, the border points of the label growing, the boundary points of an
+// open cloud); its output is a network of polylines through those candidates that close on
+// themselves or end on other lines.
+#pragma once
+
+#include <vector>
+
+#include "FeatureLines/Neighbours.h"
+
+namespace featurelines {
+
+/// One polyline of a LineNetwork.
+struct Polyline
+{
+    /// V  #V by 3 vertices in order. A closed line does not repeat its first vertex at the end.
+    PointMatrix points;
+    bool closed = false;
+    /// Row of LineNetwork::junctions the first / last vertex sits on, -1 when that end is free
+    /// (a dangling end) or the line is closed without junction.
+    int startJunction = -1;
+    int endJunction = -1;
+    /// The caller's label of the candidate clusters the line runs through (the majority along
+    /// it), 0 when the caller gave no labels. SharpEdges.h names its labels.
+    int label = 0;
+};
+
+/// Lines meeting at junctions: every junction is a point where three or more line ends meet.
+struct LineNetwork
+{
+    std::vector<Polyline> lines;
+    /// J  #J by 3 junction positions.
+    PointMatrix junctions;
+};
+
+/// Every length is a multiple of the cloud's mean point spacing (see meanSpacing()), so the
+/// defaults hold on any unit and sampling density. What the 2007 paper leaves open, and so
+/// what these defaults design, is described per option.
+struct ClusterGraphOptions
+{
+    /// Candidate clusters are gathered into graph nodes no wider than this radius around the
+    /// node's first cluster (0: one node per cluster). A band of single-point candidates
+    /// two or three points wide then becomes a chain one node wide, so the spanning tree runs
+    /// along the band instead of zigzagging across it. 1.5 covers the 3-spacing-wide bands the
+    /// segmentations produce.
+    double nodeRadius = 1.5;
+    /// G_extended adds an edge between any two nodes closer than this, bridging the gaps of
+    /// one or two missing candidates that G_all (clusters adjacent through the k nearest
+    /// neighbours) leaves open.
+    double extendedRadius = 3.0;
+    /// Edges of the spanning tree longer than this are cut (G_pruned_mst): such edges join
+    /// two separate features rather than two pieces of one.
+    double maxEdgeLength = 4.0;
+    /// Branches from a junction to a free end shorter than this are cut (G_pruned_branches):
+    /// the tree of a band several nodes wide grows short spurs across it. A band's spurs are
+    /// at most its width plus one node spacing, about 4.
+    double minBranchLength = 5.0;
+    /// A free end is joined to the nearest node ahead of it within this distance
+    /// (reconnection), so lines close or end on other lines. It must exceed
+    /// minBranchLength + maxEdgeLength: the spanning tree breaks every cycle of the feature
+    /// network somewhere, and branch pruning may shorten the broken end by up to
+    /// minBranchLength.
+    double reconnectRadius = 10.0;
+    /// Degrees: "ahead" is within this angle of the line's direction at its end.
+    double reconnectAngle = 50.0;
+    /// A reconnection is refused when it would close a cycle shorter than this many times the
+    /// new edge: joining an end back onto its own line a little behind it only makes a loop.
+    double minCycleRatio = 3.0;
+    /// Junctions joined by a chain shorter than this become one junction: where three bands
+    /// meet the tree often forks twice, a node or two apart.
+    double junctionMergeLength = 3.0;
+    /// Connected pieces of the final graph whose total length is below this are dropped: a few
+    /// candidates gathered by noise are not a feature line.
+    double minComponentLength = 6.0;
+    /// Passes of (1/4, 1/2, 1/4) smoothing of the vertices of every line before resampling;
+    /// junctions and free ends stay put. 0 keeps the node centres.
+    int smoothingPasses = 2;
+    /// Output lines are resampled at this step; 0 keeps one vertex per node.
+    double resampleSpacing = 1.0;
+};
+
+/// What each stage of the graph processing did, for diagnostics and tests.
+struct ClusterGraphCounts
+{
+    int nodes = 0;
+    int allEdges = 0;       ///< G_all
+    int extendedEdges = 0;  ///< edges G_extended adds to G_all
+    int treeEdges = 0;      ///< minimum spanning forest of G_extended
+    int overlongEdges = 0;  ///< tree edges cut for length
+    int prunedBranches = 0; ///< short branches cut
+    int reconnections = 0;  ///< edges added from free ends
+    int mergedJunctions = 0;
+    int droppedComponents = 0;
+    int freeEnds = 0;       ///< line ends left on no other line
+};
+
+struct ClusterGraph
+{
+    /// The lines, smoothed and resampled as the options say.
+    LineNetwork network;
+    /// C  #nodes by 3 node centres (mean of the node's points).
+    PointMatrix nodes;
+    /// #P node of each point, -1 for points of no candidate cluster.
+    std::vector<int> nodeOfPoint;
+    /// Per line of `network`: the nodes it runs through before smoothing and resampling
+    /// (first and last are the junction nodes when the line has junctions).
+    std::vector<std::vector<int>> lineNodes;
+    /// Per junction of `network`: its node.
+    std::vector<int> junctionNodes;
+    ClusterGraphCounts counts;
+};
+
+/// Builds and processes the cluster graph.
+///   P                 #P by 3 points
+///   N                 their k nearest neighbours (adjacency of clusters)
+///   cluster           #P cluster id per point, 0 .. #C-1; -1 leaves a point out
+///   candidateCluster  #C, nonzero for the clusters that become graph nodes
+///   spacing           the cloud's mean point spacing (every option length is a multiple of it)
+///   clusterLabel      empty, or #C labels; nodes never mix labels and lines carry the
+///                     majority label of their nodes
+/// Throws std::invalid_argument when the sizes disagree, a cluster id is out of range or the
+/// spacing is not a positive number.
+ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
+                               const std::vector<int>& cluster,
+                               const std::vector<char>& candidateCluster, double spacing,
+                               const ClusterGraphOptions& options = {},
+                               const std::vector<int>& clusterLabel = {});
+
+/// The polyline `points` resampled at equal arc-length steps as close to `step` as the length
+/// allows; an open line keeps its two end points exactly, a closed line gets at least three
+/// vertices. Lines shorter than a step keep their ends only.
+PointMatrix resamplePolyline(const PointMatrix& points, bool closed, double step);
+
+} // namespace featurelines

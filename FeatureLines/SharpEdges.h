@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Closed sharp edges on the raw cloud (Demarsin et al. 2007; Sec. 1.2 of the 2008 paper):
+// first-order segmentation, the graph of the small clusters, and the placement of every line
+// on the crease between the two surfaces it separates. The external boundary of an open cloud
+// joins the same graph, so sharp lines end on it and the two together enclose the smooth
+// regions.
+#pragma once
+
+#include <vector>
+
+#include "FeatureLines/Boundary.h"
+#include "FeatureLines/ClusterGraph.h"
+#include "FeatureLines/FirstOrderSegmentation.h"
+
+namespace featurelines {
+
+/// Polyline::label of the lines extractSharpEdges() returns.
+constexpr int sharpLineLabel = 0;
+constexpr int boundaryLineLabel = 1;
+
+struct SharpEdgeOptions
+{
+    FirstOrderSegmentationOptions segmentation;
+    /// The graph processing. Its smoothing and resampling apply to the boundary lines; sharp
+    /// lines are placed on the crease and resampled at resampleSpacing instead.
+    ClusterGraphOptions graph;
+    /// Join the boundary of an open cloud into the graph (Sec. 1.2 of the 2008 paper). A
+    /// closed surface has no boundary points, so this costs one pass over the cloud there.
+    bool includeBoundary = true;
+    /// How boundary points are found; its graph options are not used (the boundary points
+    /// join the sharp graph above).
+    BoundaryOptions boundary;
+    /// Crease placement, designed here: around every node of a sharp line the points of the
+    /// large clusters within this radius (x spacing) are fitted with one plane per cluster,
+    /// and the node moves onto the intersection of two of them (three at a junction). 3.5
+    /// spacings reach past the candidate band (about 3 wide) to 2 spacings of each face while
+    /// a curved face (a hole of radius 7 spacings) still deviates from its plane by < 1/2.
+    double fitRadius = 3.5;
+    /// A cluster needs this many points within fitRadius to be fitted (a plane of 3 points
+    /// fits anything).
+    int minFitPoints = 6;
+    /// Degrees: two fitted planes closer to parallel than this do not define a crease line.
+    double minCreaseAngle = 15.0;
+    /// A node moves onto a crease line or corner at most this far (x spacing); farther, the
+    /// fitted planes belong to another edge and the node stays where it is.
+    double maxCreaseShift = 2.5;
+    /// Sharp lines are resampled at this step (x spacing) after placement.
+    double resampleSpacing = 1.0;
+};
+
+struct SharpEdges
+{
+    /// Sharp lines (label sharpLineLabel) and, for an open cloud, boundary lines (label
+    /// boundaryLineLabel), in one network: a sharp line reaching the boundary ends on a
+    /// junction of it.
+    LineNetwork network;
+    /// #P nonzero for the points of small clusters of the segmentation.
+    std::vector<char> isSharpCandidate;
+    /// #P nonzero for boundary points (all zero unless includeBoundary).
+    std::vector<char> isBoundary;
+    FirstOrderSegmentation segmentation;
+    ClusterGraphCounts counts;
+};
+
+/// Extracts the closed sharp edges of a cloud.
+///   P        #P by 3 points
+///   normals  #P by 3 unit normals over N (e.g. pcaNormals()), unoriented
+///   N        k nearest neighbours of every point
+///   spacing  mean point spacing (meanSpacing()); every length option is a multiple of it
+/// A plane, a sphere or any surface whose normals turn slowly gives no sharp line.
+/// Throws std::invalid_argument when the sizes disagree, the spacing is not positive, or the
+/// points lie on a line (no surface to have edges).
+SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
+                             const Neighbourhoods& N, double spacing,
+                             const SharpEdgeOptions& options = {});
+
+} // namespace featurelines
