@@ -29,6 +29,8 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <Eigen/Geometry>
+
 #include "PointGrid.h"
 
 namespace featurelines::bench {
