@@ -47,6 +47,20 @@ std::vector<double> valuesOf(const RegionGeometry& region, const std::vector<int
     return values;
 }
 
+Eigen::VectorXd averageOverNeighbours(const Eigen::VectorXd& values, const Neighbourhoods& N)
+{
+    Eigen::VectorXd averaged(values.size());
+#pragma omp parallel for schedule(static)
+    for (Eigen::Index i = 0; i < values.size(); ++i) {
+        double sum = values[i];
+        for (int j = 0; j < N.k(); ++j) {
+            sum += values[N.indices(i, j)];
+        }
+        averaged[i] = sum / (N.k() + 1);
+    }
+    return averaged;
+}
+
 double median(std::vector<double> v)
 {
     if (v.empty()) {
@@ -83,6 +97,9 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
                              int regionId, double spacing, const SmoothEdgeOptions& options)
 {
+    if (options.curvatureAveragingPasses < 0) {
+        throw std::invalid_argument("curvature averaging passes must not be negative");
+    }
     if (members.size() <= static_cast<size_t>(N.k())) {
         throw std::invalid_argument("smooth region " + std::to_string(regionId) + " has " +
                                     std::to_string(members.size()) +
@@ -110,6 +127,11 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
     }
     g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
     g.curvature = meanCurvature(g.points, g.normals, g.neighbours, options.curvature);
+    if (g.smoothed) {
+        for (int pass = 0; pass < options.curvatureAveragingPasses; ++pass) {
+            g.curvature = averageOverNeighbours(g.curvature, g.neighbours);
+        }
+    }
     return g;
 }
 
@@ -165,10 +187,12 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options)
 {
     const AutomaticThresholdOptions& a = options.automatic;
-    if (a.maxThresholds < 0 || a.minRatio < 1.0 || a.minInnerPoints < 0 || a.minContrast < 1.0) {
+    if (a.maxThresholds < 0 || a.minRatio < 1.0 || a.minInnerPoints < 0 || a.minContrast < 1.0 ||
+        !(a.flatRadius > 0.0)) {
         throw std::invalid_argument("automatic thresholds: the limits are out of range");
     }
     const int minInner = a.minInnerPoints > 0 ? a.minInnerPoints : 2 * region.neighbours.k();
+    const double flat = 1.0 / (a.flatRadius * region.spacing);
     const ThresholdOptions histogram = histogramOptions(region, options);
     const std::vector<double> all = valuesOf(region, {});
     const std::vector<int> everyPoint = allIndices(region.points.rows());
@@ -211,7 +235,7 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         }
         const double medBelow = median(below);
         const double medAbove = median(above);
-        d.contrast = medBelow > 0.0 ? medAbove / medBelow : std::numeric_limits<double>::infinity();
+        d.contrast = (medAbove + flat) / (medBelow + flat);
         const std::vector<PointLabel> labels =
             labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
         d.innerPoints = static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));

@@ -33,15 +33,23 @@ enum class SmoothingMode
 ///  - its valley ratio e(tau) = b1 / b2 is at least minRatio (a peak, then a valley);
 ///  - the points above it form patches: at least minInnerPoints inner points (Sec. 3 labels),
 ///    so scattered noise above a threshold in a single peak's tail is no patch;
-///  - the curvature contrast, median above tau over median at or below it within the values
-///    searched, is at least minContrast (two curvature levels, not one level split in two).
+///  - the curvature contrast (c_above + c_flat) / (c_below + c_flat), with c_above and c_below
+///    the medians above tau and at or below it within the values searched, is at least
+///    minContrast: two curvature levels, not one level split in two. c_flat = 1 / (flatRadius x
+///    spacing) is the curvature that cannot be told from a plane at this sampling, so the
+///    round-off values of a flat face (all ~0) never make a contrast.
 struct AutomaticThresholdOptions
 {
     int maxThresholds = 3;
     double minRatio = 2.0;
     /// 0: 2 k, two neighbourhoods' worth of points.
     int minInnerPoints = 0;
+    /// A fillet (cylinder, |H| = 1 / 2r) against the corner that joins it (sphere, 1 / r) has
+    /// contrast 2; 1.6 leaves room for the blur of the curvature across the tangent line.
     double minContrast = 1.6;
+    /// x spacing. Over a neighbourhood of radius 2.5 spacings a sphere of radius 200 spacings
+    /// departs from its tangent plane by 0.016 spacing, below any scanner's noise.
+    double flatRadius = 200.0;
 };
 
 struct SmoothEdgeOptions
@@ -55,6 +63,12 @@ struct SmoothEdgeOptions
     /// Taubin passes when smoothing. Twenty passes of lambda|mu bring noise of 0.3 spacing
     /// below the curvature contrast of a fillet of radius 6 spacings.
     SmoothingOptions smoothingOptions{20, 0.5, -0.53};
+    /// Passes of averaging the curvature over each point's neighbourhood, in smoothed regions
+    /// only (beyond Sec. 2.4). Smoothing the points leaves the quadric fit a residual noise that
+    /// still spreads a flat face's curvature over a fillet's; one pass of averaging over 17
+    /// values cuts that spread by about four and moves a curvature step by less than a
+    /// neighbourhood radius, symmetrically about the tangent line.
+    int curvatureAveragingPasses = 1;
     CurvatureOptions curvature;
     /// L_start, outliers and search of Sec. 2.2-2.4. outlierPercent < 0 chooses: 1 % for a
     /// smoothed (noisy) region, none for a clean one (Sec. 2.4: outliers come with noise).
