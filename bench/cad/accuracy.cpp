@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "FeatureLines/Extraction.h"
+
 #include "Baselines.h"
 #include "CadShapes.h"
 #include "LineScore.h"
@@ -31,17 +33,19 @@ using namespace featurelines::bench;
 namespace {
 
 // ---------------------------------------------------------------------------------------------
-// The project's extraction: the one function to fill in when featurelines::extractFeatureLines
-// (FeatureLines/Extraction.h) exists. It receives the cloud only, as a user would give it, and
-// returns the typed polylines, or std::nullopt while there is no extraction (the table then
-// prints "-" for it). Wiring it: link FeatureLinesCore to featurelines_accuracy
-// (bench/cad/CMakeLists.txt), include the header, call the extraction with its default
-// options, convert each returned line's type name (lineTypeFromName), closed flag and points
-// into a TypedPolyline.
+// The project's extraction with its default options, on the cloud only, as a user runs it.
 std::optional<std::vector<TypedPolyline>> runFeatureLines(const PointMatrix& cloud)
 {
-    (void)cloud;
-    return std::nullopt;
+    const featurelines::ExtractionResult result = featurelines::extractFeatureLines(cloud);
+    std::vector<TypedPolyline> lines;
+    for (const featurelines::FeatureLine& l : result.lines) {
+        TypedPolyline t;
+        t.type = lineTypeFromName(featurelines::lineTypeName(l.type));
+        t.closed = l.closed;
+        t.points = l.points;
+        lines.push_back(std::move(t));
+    }
+    return lines;
 }
 // ---------------------------------------------------------------------------------------------
 
