@@ -1,0 +1,480 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <FCConfig.h>
+
+#include "ExtractionFeature.h"
+
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRep_Builder.hxx>
+#include <Precision.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Pnt.hxx>
+
+#include <Base/Exception.h>
+#include <Mod/Points/App/PointsFeature.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "ExtractionCache.h"
+#include "ExtractionProgress.h"
+
+using namespace FeatureLines;
+
+using featurelines::ExtractionResult;
+using featurelines::LineType;
+using featurelines::PointMatrix;
+
+namespace {
+
+/// FreeCAD keeps a pointer to a property's constraints: one instance per parameter, for good.
+template <class Constraints> const Constraints* constraintsOf(const Parameter& p)
+{
+    static std::map<const Parameter*, Constraints> all;
+    auto it = all.find(&p);
+    if (it == all.end()) {
+        Constraints c;
+        c.LowerBound = p.minimum;
+        c.UpperBound = p.maximum;
+        c.StepSize = p.step;
+        it = all.emplace(&p, c).first;
+    }
+    return &it->second;
+}
+
+bool hasKind(const App::Property& prop, ParameterKind kind)
+{
+    switch (kind) {
+    case ParameterKind::Integer:
+        return prop.isDerivedFrom(App::PropertyIntegerConstraint::getClassTypeId());
+    case ParameterKind::Float:
+    case ParameterKind::Spacing:
+        return prop.isDerivedFrom(App::PropertyFloatConstraint::getClassTypeId());
+    case ParameterKind::Angle:
+        return prop.isDerivedFrom(App::PropertyAngle::getClassTypeId());
+    case ParameterKind::Switch:
+        return prop.isDerivedFrom(App::PropertyBool::getClassTypeId());
+    case ParameterKind::Choice:
+        return prop.isDerivedFrom(App::PropertyEnumeration::getClassTypeId());
+    }
+    return false;
+}
+
+double readProperty(const App::Property& prop, ParameterKind kind)
+{
+    switch (kind) {
+    case ParameterKind::Integer:
+        return double(static_cast<const App::PropertyIntegerConstraint&>(prop).getValue());
+    case ParameterKind::Float:
+    case ParameterKind::Spacing:
+        return static_cast<const App::PropertyFloatConstraint&>(prop).getValue();
+    case ParameterKind::Angle:
+        return static_cast<const App::PropertyAngle&>(prop).getValue();
+    case ParameterKind::Switch:
+        return static_cast<const App::PropertyBool&>(prop).getValue() ? 1.0 : 0.0;
+    case ParameterKind::Choice:
+        return double(static_cast<const App::PropertyEnumeration&>(prop).getValue());
+    }
+    return 0.0;
+}
+
+void writeProperty(App::Property& prop, ParameterKind kind, double value)
+{
+    switch (kind) {
+    case ParameterKind::Integer:
+        static_cast<App::PropertyIntegerConstraint&>(prop).setValue(std::lround(value));
+        break;
+    case ParameterKind::Float:
+    case ParameterKind::Spacing:
+        static_cast<App::PropertyFloatConstraint&>(prop).setValue(value);
+        break;
+    case ParameterKind::Angle:
+        static_cast<App::PropertyAngle&>(prop).setValue(value);
+        break;
+    case ParameterKind::Switch:
+        static_cast<App::PropertyBool&>(prop).setValue(value != 0.0);
+        break;
+    case ParameterKind::Choice:
+        static_cast<App::PropertyEnumeration&>(prop).setValue(std::lround(value));
+        break;
+    }
+}
+
+constexpr App::PropertyType outputType = App::PropertyType(App::Prop_Output | App::Prop_ReadOnly);
+constexpr App::PropertyType perPointType =
+    App::PropertyType(App::Prop_Output | App::Prop_ReadOnly | App::Prop_Hidden);
+
+std::string labelOf(const App::DocumentObject* obj)
+{
+    return obj->Label.getStrValue();
+}
+
+std::string formatValue(double v)
+{
+    std::ostringstream s;
+    s.precision(4);
+    s << v;
+    return s.str();
+}
+
+} // namespace
+
+PROPERTY_SOURCE(FeatureLines::Extraction, Part::Feature)
+
+Extraction::Extraction()
+{
+    ADD_PROPERTY_TYPE(Source, (nullptr), "Extraction", App::Prop_None,
+                      "The point cloud: a Points object (File > Import an .xyz, .asc, .ply or "
+                      ".pcd file).");
+
+    initParameter(NeighbourCount, "NeighbourCount");
+    initParameter(SharpEdges, "SharpEdges");
+    initParameter(BoundaryLines, "BoundaryLines");
+    initParameter(GrowAngle, "GrowAngle");
+    initParameter(JoinAngle, "JoinAngle");
+    initParameter(CreaseFitRadius, "CreaseFitRadius");
+    initParameter(MinCreaseAngle, "MinCreaseAngle");
+    initParameter(BoundaryGapAngle, "BoundaryGapAngle");
+    initParameter(SmoothEdges, "SmoothEdges");
+    initParameter(BandWidth, "BandWidth");
+    initParameter(Smoothing, "Smoothing");
+    initParameter(SmoothingIterations, "SmoothingIterations");
+    initParameter(NoiseThreshold, "NoiseThreshold");
+    initParameter(SignedCurvature, "SignedCurvature");
+    initParameter(NodeRadius, "NodeRadius");
+    initParameter(ExtendedRadius, "ExtendedRadius");
+    initParameter(MaxEdgeLength, "MaxEdgeLength");
+    initParameter(MinBranchLength, "MinBranchLength");
+    initParameter(ReconnectRadius, "ReconnectRadius");
+    initParameter(ReconnectAngle, "ReconnectAngle");
+    initParameter(MinComponentLength, "MinComponentLength");
+    initParameter(ResampleSpacing, "ResampleSpacing");
+    initParameter(ThresholdMode, "ThresholdMode");
+    initParameter(HistogramBins, "HistogramBins");
+    initParameter(OutlierPercent, "OutlierPercent");
+    initParameter(MinPeakPercent, "MinPeakPercent");
+    initParameter(MaxThresholds, "MaxThresholds");
+    initParameter(MinValleyRatio, "MinValleyRatio");
+    initParameter(MinContrast, "MinContrast");
+    _ADD_PROPERTY_TYPE(thresholdsName, Thresholds, (), "Thresholds", App::Prop_None, thresholdsDoc);
+    _ADD_PROPERTY_TYPE(regionThresholdsName, RegionThresholds, (), "Thresholds", App::Prop_None,
+                       regionThresholdsDoc);
+
+    ADD_PROPERTY_TYPE(SharpWires, (TopoDS_Shape()), "Output", outputType,
+                      "The sharp edges: a compound of wires.");
+    ADD_PROPERTY_TYPE(SmoothWires, (TopoDS_Shape()), "Output", outputType,
+                      "The smooth edges (fillet borders): a compound of wires, one closed set per "
+                      "threshold of each region.");
+    ADD_PROPERTY_TYPE(BoundaryWires, (TopoDS_Shape()), "Output", outputType,
+                      "The boundary of an open cloud: a compound of wires.");
+    ADD_PROPERTY_TYPE(SharpLineCount, (0), "Output", outputType, "Wires in SharpWires.");
+    ADD_PROPERTY_TYPE(SmoothLineCount, (0), "Output", outputType, "Wires in SmoothWires.");
+    ADD_PROPERTY_TYPE(BoundaryLineCount, (0), "Output", outputType, "Wires in BoundaryWires.");
+    ADD_PROPERTY_TYPE(ClosedLineCount, (0), "Output", outputType,
+                      "Closed wires; the others end on junctions where three or more lines meet.");
+    ADD_PROPERTY_TYPE(SmoothLineRegions, (), "Output", outputType,
+                      "Per wire of SmoothWires: its smooth region.");
+    ADD_PROPERTY_TYPE(SmoothLineThresholds, (), "Output", outputType,
+                      "Per wire of SmoothWires: the curvature threshold it borders.");
+    ADD_PROPERTY_TYPE(Junctions, (), "Output", outputType,
+                      "Points where three or more lines meet.");
+    ADD_PROPERTY_TYPE(Spacing, (0.0), "Output", outputType,
+                      "Mean point spacing of the cloud: the unit of every 'x point spacing' "
+                      "parameter.");
+    ADD_PROPERTY_TYPE(RegionCount, (0), "Output", outputType,
+                      "Smooth regions: the parts of the cloud the sharp edges enclose (Sec. 1.2).");
+    ADD_PROPERTY_TYPE(PatchCount, (0), "Output", outputType,
+                      "Patches: connected points of one region between the same two thresholds.");
+    ADD_PROPERTY_TYPE(UsedThresholds, (), "Output", outputType,
+                      "The curvature thresholds applied, high to low within each region.");
+    ADD_PROPERTY_TYPE(UsedThresholdRegions, (), "Output", outputType,
+                      "The region of each of UsedThresholds.");
+    ADD_PROPERTY_TYPE(PointRegion, (), "Output", perPointType,
+                      "Per source point: its smooth region, -1 on the band of a sharp edge.");
+    ADD_PROPERTY_TYPE(PointPatch, (), "Output", perPointType,
+                      "Per source point: its patch, -1 outside every region.");
+    ADD_PROPERTY_TYPE(PointLabel, (), "Output", perPointType,
+                      "Per source point: its Sec. 3 label at its region's first threshold: 0 low, "
+                      "1 inner, 2 border, 3 noisy, -1 outside every region.");
+    ADD_PROPERTY_TYPE(PointCurvature, (), "Output", perPointType,
+                      "Per source point: its mean curvature in its region (NaN outside).");
+}
+
+void Extraction::initParameter(App::Property& property, const char* name)
+{
+    const Parameter* p = findParameter(name);
+    if (!p || !hasKind(property, p->kind)) {
+        throw Base::RuntimeError(std::string("FeatureLines::Extraction: no parameter ") + name +
+                                 " of this property type");
+    }
+    switch (p->kind) {
+    case ParameterKind::Integer: {
+        auto& prop = static_cast<App::PropertyIntegerConstraint&>(property);
+        prop.setConstraints(constraintsOf<App::PropertyIntegerConstraint::Constraints>(*p));
+        break;
+    }
+    case ParameterKind::Float:
+    case ParameterKind::Spacing: {
+        auto& prop = static_cast<App::PropertyFloatConstraint&>(property);
+        prop.setConstraints(constraintsOf<App::PropertyFloatConstraint::Constraints>(*p));
+        break;
+    }
+    case ParameterKind::Angle: {
+        auto& prop = static_cast<App::PropertyAngle&>(property);
+        prop.setConstraints(constraintsOf<App::PropertyQuantityConstraint::Constraints>(*p));
+        break;
+    }
+    case ParameterKind::Choice:
+        static_cast<App::PropertyEnumeration&>(property).setEnums(
+            const_cast<const char**>(p->choices));
+        break;
+    case ParameterKind::Switch:
+        break;
+    }
+    writeProperty(property, p->kind, defaultValue(*p));
+    property.setContainer(this);
+    propertyData.addProperty(static_cast<App::PropertyContainer*>(this), p->name, &property,
+                             p->group, App::Prop_None, p->doc);
+}
+
+ParameterValues Extraction::parameterValues() const
+{
+    ParameterValues values;
+    for (const Parameter& p : parameters()) {
+        const App::Property* prop = getPropertyByName(p.name);
+        values.scalars[p.name] = readProperty(*prop, p.kind);
+    }
+    values.thresholds = Thresholds.getValues();
+    values.regionThresholds = parseRegionThresholds(RegionThresholds.getValues());
+    return values;
+}
+
+void Extraction::setParameterValues(const ParameterValues& values)
+{
+    toExtractionOptions(values); // validates before anything changes
+    for (const auto& [name, value] : values.scalars) {
+        const Parameter* p = findParameter(name);
+        writeProperty(*getPropertyByName(p->name), p->kind, value);
+    }
+    if (values.thresholds) {
+        Thresholds.setValues(*values.thresholds);
+    }
+    if (values.regionThresholds) {
+        RegionThresholds.setValues(formatRegionThresholds(*values.regionThresholds));
+    }
+}
+
+App::DocumentObjectExecReturn* Extraction::execute()
+{
+    App::DocumentObject* source = Source.getValue();
+    if (!source) {
+        return new App::DocumentObjectExecReturn(
+            "No point cloud: set Source to a Points object (File > Import an .xyz, .asc, .ply "
+            "or .pcd file).");
+    }
+    const std::string label = labelOf(source);
+    if (!source->isDerivedFrom(Points::Feature::getClassTypeId())) {
+        return new App::DocumentObjectExecReturn(
+            "'" + label + "' is not a point cloud: Source must be a Points object, not a " +
+            source->getTypeId().getName() + ".");
+    }
+    featurelines::ExtractionOptions options;
+    try {
+        options = toExtractionOptions(parameterValues());
+    } catch (const std::invalid_argument& e) {
+        return new App::DocumentObjectExecReturn(e.what());
+    }
+    if (!options.sharpEdges && !options.smoothEdges && !options.sharp.includeBoundary) {
+        return new App::DocumentObjectExecReturn(
+            "SharpEdges, SmoothEdges and BoundaryLines are all off: nothing to extract.");
+    }
+    const Points::PointKernel& kernel = static_cast<Points::Feature*>(source)->Points.getValue();
+    const size_t needed = static_cast<size_t>(options.neighbours.k) + 1;
+    if (kernel.size() < needed) {
+        return new App::DocumentObjectExecReturn(
+            "Too few points: '" + label + "' has " + std::to_string(kernel.size()) +
+            " points; at least " + std::to_string(needed) +
+            " are needed for NeighbourCount = " + std::to_string(options.neighbours.k) + ".");
+    }
+    const size_t valid = kernel.countValid();
+    if (valid != kernel.size()) {
+        return new App::DocumentObjectExecReturn(
+            "'" + label + "' has " + std::to_string(kernel.size() - valid) +
+            " invalid (NaN) points; drop them first, e.g. in the Python console: cloud.Points = "
+            "cloud.Points.fromValid()");
+    }
+
+    const PointMatrix P = kernelPoints(kernel);
+    ExtractionProgress progress("Feature lines of " + label);
+    options.progress = progress.callback();
+    ExtractionResult result;
+    try {
+        result = extractCached(P, hashCloud(P), options);
+    } catch (const featurelines::ExtractionCancelled&) {
+        return new App::DocumentObjectExecReturn(
+            "Feature line extraction cancelled by the user; the previous lines are kept.");
+    } catch (const std::invalid_argument& e) {
+        return new App::DocumentObjectExecReturn("'" + label + "': " + e.what());
+    }
+    if (result.lines.empty()) {
+        return new App::DocumentObjectExecReturn(
+            "No feature lines found in '" + label + "' (" + std::to_string(kernel.size()) +
+            " points, spacing " + formatValue(result.spacing) +
+            "): no crease turns beyond GrowAngle and no smooth region's curvature histogram has "
+            "a significant valley. Lower GrowAngle for shallow creases, or set ThresholdMode to "
+            "Explicit and give Thresholds.");
+    }
+    setOutputs(result, kernel.getTransform());
+    return App::DocumentObject::StdReturn;
+}
+
+void Extraction::setOutputs(const ExtractionResult& r, const Base::Matrix4D& toWorld)
+{
+    const LineWires w = makeWires(r, toWorld);
+    std::vector<TopoDS_Wire> all = w.sharp;
+    all.insert(all.end(), w.smooth.begin(), w.smooth.end());
+    all.insert(all.end(), w.boundary.begin(), w.boundary.end());
+    Shape.setValue(makeCompound(all));
+
+    const Base::Matrix4D placement = Placement.getValue().toMatrix();
+    auto placed = [&](const std::vector<TopoDS_Wire>& wires) {
+        Part::TopoShape shape(makeCompound(wires));
+        shape.setTransform(placement);
+        return shape;
+    };
+    SharpWires.setValue(placed(w.sharp));
+    SmoothWires.setValue(placed(w.smooth));
+    BoundaryWires.setValue(placed(w.boundary));
+    SharpLineCount.setValue(static_cast<long>(w.sharp.size()));
+    SmoothLineCount.setValue(static_cast<long>(w.smooth.size()));
+    BoundaryLineCount.setValue(static_cast<long>(w.boundary.size()));
+    ClosedLineCount.setValue(w.closed);
+    SmoothLineRegions.setValues(w.smoothRegion);
+    SmoothLineThresholds.setValues(w.smoothThreshold);
+
+    std::vector<Base::Vector3d> junctions;
+    for (Eigen::Index j = 0; j < r.junctions.rows(); ++j) {
+        junctions.push_back(
+            toWorld * Base::Vector3d(r.junctions(j, 0), r.junctions(j, 1), r.junctions(j, 2)));
+    }
+    Junctions.setValues(junctions);
+    Spacing.setValue(r.spacing);
+
+    std::vector<double> thresholds;
+    std::vector<long> thresholdRegions;
+    for (const featurelines::RegionReport& report : r.regions) {
+        for (double t : report.thresholds) {
+            thresholds.push_back(t);
+            thresholdRegions.push_back(report.region);
+        }
+    }
+    UsedThresholds.setValues(thresholds);
+    UsedThresholdRegions.setValues(thresholdRegions);
+
+    std::vector<long> region(r.region.begin(), r.region.end());
+    std::vector<long> patch(r.patch.begin(), r.patch.end());
+    std::vector<long> label(r.label.size());
+    for (size_t i = 0; i < label.size(); ++i) {
+        label[i] = r.label[i] == featurelines::PointLabel::Outside ? -1 : long(r.label[i]);
+    }
+    RegionCount.setValue(region.empty() ? 0 : *std::max_element(region.begin(), region.end()) + 1);
+    PatchCount.setValue(patch.empty() ? 0 : *std::max_element(patch.begin(), patch.end()) + 1);
+    PointRegion.setValues(region);
+    PointPatch.setValues(patch);
+    PointLabel.setValues(label);
+    PointCurvature.setValues(
+        std::vector<double>(r.curvature.data(), r.curvature.data() + r.curvature.size()));
+}
+
+void Extraction::onChanged(const App::Property* prop)
+{
+    // The lines by type follow the object's placement as Shape does (Part::Feature::onChanged).
+    if (prop == &Placement) {
+        const Base::Matrix4D placement = Placement.getValue().toMatrix();
+        for (Part::PropertyPartShape* shape : {&SharpWires, &SmoothWires, &BoundaryWires}) {
+            const_cast<Part::TopoShape&>(shape->getShape()).setTransform(placement);
+        }
+    }
+    Part::Feature::onChanged(prop);
+}
+
+namespace FeatureLines {
+
+PointMatrix kernelPoints(const Points::PointKernel& kernel)
+{
+    const auto& stored = kernel.getBasicPoints();
+    PointMatrix P(static_cast<Eigen::Index>(stored.size()), 3);
+    for (size_t i = 0; i < stored.size(); ++i) {
+        const auto row = static_cast<Eigen::Index>(i);
+        P(row, 0) = stored[i].x;
+        P(row, 1) = stored[i].y;
+        P(row, 2) = stored[i].z;
+    }
+    return P;
+}
+
+LineWires makeWires(const ExtractionResult& result, const Base::Matrix4D& toWorld)
+{
+    LineWires out;
+    for (const featurelines::FeatureLine& line : result.lines) {
+        // Vertices closer than OCCT's confusion tolerance would make degenerate edges.
+        std::vector<gp_Pnt> vertices;
+        for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+            const Base::Vector3d p =
+                toWorld * Base::Vector3d(line.points(i, 0), line.points(i, 1), line.points(i, 2));
+            const gp_Pnt v(p.x, p.y, p.z);
+            if (vertices.empty() || v.Distance(vertices.back()) > Precision::Confusion()) {
+                vertices.push_back(v);
+            }
+        }
+        bool closed = line.closed;
+        while (closed && vertices.size() > 1 &&
+               vertices.back().Distance(vertices.front()) <= Precision::Confusion()) {
+            vertices.pop_back();
+        }
+        closed = closed && vertices.size() >= 3;
+        if (vertices.size() < 2) {
+            continue; // all vertices coincide: no wire
+        }
+        BRepBuilderAPI_MakePolygon polygon;
+        for (const gp_Pnt& v : vertices) {
+            polygon.Add(v);
+        }
+        if (closed) {
+            polygon.Close();
+        }
+        if (!polygon.IsDone()) {
+            continue;
+        }
+        const TopoDS_Wire wire = polygon.Wire();
+        out.closed += closed ? 1 : 0;
+        switch (line.type) {
+        case LineType::Sharp:
+            out.sharp.push_back(wire);
+            break;
+        case LineType::Smooth:
+            out.smooth.push_back(wire);
+            out.smoothRegion.push_back(line.region);
+            out.smoothThreshold.push_back(line.threshold);
+            break;
+        case LineType::Boundary:
+            out.boundary.push_back(wire);
+            break;
+        }
+    }
+    return out;
+}
+
+TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires)
+{
+    BRep_Builder builder;
+    TopoDS_Compound compound;
+    builder.MakeCompound(compound);
+    for (const TopoDS_Wire& wire : wires) {
+        builder.Add(compound, wire);
+    }
+    return compound;
+}
+
+} // namespace FeatureLines

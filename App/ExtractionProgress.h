@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Progress of an extraction shown through FreeCAD's sequencer (the progress bar of the GUI, the
+// console in freecadcmd) and handed to an optional Python observer. Either can cancel: the
+// user through the progress bar, a script by returning False from its observer.
+#pragma once
+
+#include <Base/Sequencer.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace FeatureLines {
+
+class ExtractionProgress
+{
+public:
+    explicit ExtractionProgress(const std::string& title);
+    /// The core's progress callback (ExtractionOptions::progress): false cancels.
+    std::function<bool(double, const std::string&)> callback();
+
+private:
+    bool report(double done, const std::string& stage);
+
+    std::string title;
+    std::unique_ptr<Base::SequencerLauncher> launcher;
+    size_t steps = 0;
+};
+
+/// Sets the callable called as observer(fraction_done, stage_name) at every stage of every
+/// extraction (document recomputes and FeatureLines.extract()); returning False cancels the
+/// run, raising an exception cancels it too. nullptr or None removes it.
+void setProgressObserver(PyObject* callable);
+
+} // namespace FeatureLines
