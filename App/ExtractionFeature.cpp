@@ -199,6 +199,9 @@ Extraction::Extraction()
                       "1 inner, 2 border, 3 noisy, -1 outside every region.");
     ADD_PROPERTY_TYPE(PointCurvature, (), "Output", perPointType,
                       "Per source point: its mean curvature in its region (NaN outside).");
+    // A new object has no result yet: the next recompute runs it (or says what it lacks), as
+    // Part::Primitive does. Reopening a document clears this.
+    touch();
 }
 
 void Extraction::initParameter(App::Property& property, const char* name)
