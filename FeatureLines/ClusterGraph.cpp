@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
 #include <stdexcept>
@@ -357,6 +358,66 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options)
     return added;
 }
 
+/// Bubbles: where a band is two nodes wide, the tree may run two parallel chains that the
+/// reconnection then joins at both ends. Of two chains joining the same two junctions (or a
+/// chain leaving a junction and returning to it) the longer is dropped when it is shorter
+/// than maxLength; a real face is bounded by more junctions or by longer lines.
+int removeBubbles(Graph& g, double maxLength)
+{
+    int removed = 0;
+    for (bool changed = true; changed;) {
+        changed = false;
+        std::map<std::pair<int, int>, std::vector<std::pair<double, std::vector<int>>>> chains;
+        for (int j = 0; j < g.size() && !changed; ++j) {
+            if (g.degree(j) < 3) {
+                continue;
+            }
+            for (int first : g.neighbours(j)) {
+                auto [chain, length] = g.chainFrom(j, first);
+                const int end = chain.back();
+                if (g.degree(end) < 3 || length >= maxLength) {
+                    continue;
+                }
+                if (end == j) {
+                    // A short loop hanging at one junction.
+                    for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
+                        g.isolate(chain[i]);
+                    }
+                    if (chain.size() == 2) {
+                        g.removeEdge(j, first);
+                    }
+                    ++removed;
+                    changed = true;
+                    break;
+                }
+                if (j < end) {
+                    chains[{j, end}].emplace_back(length, std::move(chain));
+                }
+            }
+        }
+        if (changed) {
+            continue;
+        }
+        for (auto& [ends, list] : chains) {
+            if (list.size() < 2) {
+                continue;
+            }
+            std::sort(list.begin(), list.end());
+            const std::vector<int>& drop = list[1].second;
+            if (drop.size() == 2) {
+                g.removeEdge(drop[0], drop[1]);
+            }
+            for (std::size_t i = 1; i + 1 < drop.size(); ++i) {
+                g.isolate(drop[i]);
+            }
+            ++removed;
+            changed = true;
+            break;
+        }
+    }
+    return removed;
+}
+
 /// Junctions joined by a short chain (and short loops hanging at one junction) become one
 /// junction at the mean of the merged nodes.
 int mergeCloseJunctions(Graph& g, double maxLength)
@@ -403,8 +464,9 @@ int mergeCloseJunctions(Graph& g, double maxLength)
     return merged;
 }
 
-/// Drops connected pieces whose total length is below minLength.
-int dropShortComponents(Graph& g, double minLength)
+/// Drops connected pieces whose total length is below minLength, and those without a cycle
+/// (open lines and trees) whose length is below minOpenLength.
+int dropShortComponents(Graph& g, double minLength, double minOpenLength)
 {
     std::vector<char> seen(g.size(), 0);
     int dropped = 0;
@@ -415,8 +477,10 @@ int dropShortComponents(Graph& g, double minLength)
         std::vector<int> component{s};
         seen[s] = 1;
         double length = 0.0;
+        std::size_t edgeEnds = 0;
         for (std::size_t i = 0; i < component.size(); ++i) {
             const int v = component[i];
+            edgeEnds += g.neighbours(v).size();
             for (int u : g.neighbours(v)) {
                 length += 0.5 * g.length(v, u);
                 if (!seen[u]) {
@@ -425,7 +489,8 @@ int dropShortComponents(Graph& g, double minLength)
                 }
             }
         }
-        if (length < minLength) {
+        const bool hasCycle = edgeEnds / 2 >= component.size();
+        if (length < minLength || (!hasCycle && length < minOpenLength)) {
             for (int v : component) {
                 g.isolate(v);
             }
@@ -678,10 +743,12 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         result.counts.reconnections = reconnectEnds(graph, options);
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
     }
+    result.counts.bubbles = removeBubbles(graph, options.maxBubbleLength * spacing);
     result.counts.mergedJunctions =
         mergeCloseJunctions(graph, options.junctionMergeLength * spacing);
     result.counts.droppedComponents =
-        dropShortComponents(graph, options.minComponentLength * spacing);
+        dropShortComponents(graph, options.minComponentLength * spacing,
+                            options.minOpenComponentLength * spacing);
 
     result.nodes.resize(nodeCount, 3);
     for (int v = 0; v < nodeCount; ++v) {

@@ -73,12 +73,22 @@ struct ClusterGraphOptions
     /// A reconnection is refused when it would close a cycle shorter than this many times the
     /// new edge: joining an end back onto its own line a little behind it only makes a loop.
     double minCycleRatio = 3.0;
+    /// Of two chains joining the same two junctions, the longer is dropped when it is shorter
+    /// than this (and so is a loop shorter than this leaving a junction and returning to it):
+    /// where a band is two nodes wide the tree can run two parallel chains, which the
+    /// reconnection joins into a bubble. Three times minBranchLength.
+    double maxBubbleLength = 15.0;
     /// Junctions joined by a chain shorter than this become one junction: where three bands
     /// meet the tree often forks twice, a node or two apart.
     double junctionMergeLength = 3.0;
     /// Connected pieces of the final graph whose total length is below this are dropped: a few
     /// candidates gathered by noise are not a feature line.
     double minComponentLength = 6.0;
+    /// Connected pieces without any cycle (a lone open line or a tree) shorter than this are
+    /// dropped too. Feature lines of a part close on themselves or end on other lines, so a
+    /// short piece ending in nothing on both sides is noise gathered along a curved surface
+    /// rather than a feature; a longer one is kept (a broken feature still marks an edge).
+    double minOpenComponentLength = 15.0;
     /// Passes of (1/4, 1/2, 1/4) smoothing of the vertices of every line before resampling;
     /// junctions and free ends stay put. 0 keeps the node centres.
     int smoothingPasses = 2;
@@ -96,6 +106,7 @@ struct ClusterGraphCounts
     int overlongEdges = 0;  ///< tree edges cut for length
     int prunedBranches = 0; ///< short branches cut
     int reconnections = 0;  ///< edges added from free ends
+    int bubbles = 0;        ///< parallel chains dropped
     int mergedJunctions = 0;
     int droppedComponents = 0;
     int freeEnds = 0;       ///< line ends left on no other line

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <vector>
 #include <string>
 
 #include <omp.h>
@@ -40,14 +41,24 @@ int findRoot(std::vector<int>& parent, int a)
 
 } // namespace
 
-FirstOrderSegmentation segmentByNormals(const NormalMatrix& normals, const Neighbourhoods& N,
+FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix& normals,
+                                        const Neighbourhoods& N, double spacing,
                                         const FirstOrderSegmentationOptions& options)
 {
-    const Eigen::Index n = normals.rows();
-    if (N.size() != n) {
+    const Eigen::Index n = P.rows();
+    if (N.size() != n || normals.rows() != n) {
         throw std::invalid_argument(
-            "first-order segmentation: the neighbourhoods were computed for another cloud (" +
-            std::to_string(N.size()) + " rows for " + std::to_string(n) + " normals)");
+            "first-order segmentation: the normals and neighbourhoods must have one row per "
+            "point (" + std::to_string(n) + " points, " + std::to_string(normals.rows()) +
+            " normals, " + std::to_string(N.size()) + " neighbourhoods)");
+    }
+    if (!(spacing > 0.0) || !std::isfinite(spacing)) {
+        throw std::invalid_argument("first-order segmentation: the point spacing must be a "
+                                    "positive number");
+    }
+    if (!(options.minFilletRadius > 0.0)) {
+        throw std::invalid_argument("first-order segmentation: the smallest fillet radius must "
+                                    "be positive");
     }
     if (!normals.allFinite()) {
         throw std::invalid_argument("first-order segmentation: a normal is NaN or infinite");
@@ -55,7 +66,6 @@ FirstOrderSegmentation segmentByNormals(const NormalMatrix& normals, const Neigh
     requireAngle(options.growAngle, "the grow angle");
     requireAngle(options.joinAngle, "the join angle");
     const int k = N.k();
-    const double cosGrow = std::cos(options.growAngle * pi / 180.0);
     const double cosJoin = std::cos(options.joinAngle * pi / 180.0);
     auto similarity = [&](Eigen::Index a, Eigen::Index b) {
         // Unoriented normals: n and -n are the same plane.
@@ -63,16 +73,72 @@ FirstOrderSegmentation segmentByNormals(const NormalMatrix& normals, const Neigh
     };
 
     FirstOrderSegmentation result;
+    if (n == 0) {
+        return result;
+    }
     result.spread.resize(n);
-    std::vector<char> grows(n, 0);
+    Eigen::VectorXd variation(n);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
         double lowest = 1.0;
+        // Surface variation lambda0 / (lambda0 + lambda1 + lambda2) of the point and its
+        // neighbours, with lambda0 read along the given normal: n^T C n / trace C.
+        const Eigen::RowVector3d origin = P.row(i);
+        const Eigen::RowVector3d normal = normals.row(i);
+        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+        double squares = 0.0;
+        double heights = 0.0;
+        double heightSquares = 0.0;
         for (int j = 0; j < k; ++j) {
-            lowest = std::min(lowest, similarity(i, N.indices(i, j)));
+            const int q = N.indices(i, j);
+            lowest = std::min(lowest, similarity(i, q));
+            const Eigen::RowVector3d d = P.row(q) - origin;
+            const double h = d.dot(normal);
+            sum += d;
+            squares += d.squaredNorm();
+            heights += h;
+            heightSquares += h * h;
         }
-        grows[i] = lowest >= cosGrow ? 1 : 0;
+        const double count = k + 1;
+        const double trace = squares / count - (sum / count).squaredNorm();
+        const double across = heightSquares / count - std::pow(heights / count, 2);
+        variation(i) = trace > 0.0 ? std::max(0.0, across) / trace : 0.0;
         result.spread(i) = std::acos(std::min(1.0, lowest)) * 180.0 / pi;
+    }
+
+    // The excess of surface variation over the cloud's typical value. Noise along the normal
+    // adds its variance to lambda0 everywhere, so the cloud's median (most points lie on
+    // smooth patches) is the noise floor, and its spread (the median absolute deviation) how
+    // far noise alone reaches above it.
+    result.planarityExcess = variation;
+    std::vector<double> sorted(variation.data(), variation.data() + n);
+    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+    const double median = sorted[n / 2];
+    result.planarityExcess.array() -= median;
+    for (double& v : sorted) {
+        v = std::abs(v - median);
+    }
+    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+    const double noiseDeviation = 1.4826 * sorted[n / 2]; // the normal law's sigma from its MAD
+
+    // A sphere of radius r sampled over a ball of radius R has surface variation
+    // R^2 / (24 r^2) (heights rho^2 / 2r over the disc), a cylinder R^2 / (32 r^2); R is the
+    // typical distance to the k-th neighbour.
+    std::vector<double> reach(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        reach[i] = N.squaredDistances(i, k - 1);
+    }
+    std::nth_element(reach.begin(), reach.begin() + n / 2, reach.end());
+    const double filletRadius = options.minFilletRadius * spacing;
+    result.minExcess = std::max(reach[n / 2] / (24.0 * filletRadius * filletRadius),
+                                options.noiseMargin * noiseDeviation);
+
+    std::vector<char> grows(n, 0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        grows[i] = result.spread(i) <= options.growAngle ||
+                           result.planarityExcess(i) <= result.minExcess
+                       ? 1
+                       : 0;
     }
 
     // Growing points reached from one another form one cluster: the connected components of

@@ -13,23 +13,36 @@ namespace featurelines {
 
 /// The paper states region growing on normal variation; the criterion, its thresholds and
 /// the meaning of "small" are designed here (see each option).
+///
+/// Why two measures. PCA normals over k = 16 neighbours (a ball of radius R ~ 2.7 spacings)
+/// blur a crease over about 2R, so a crease turning the normal by a looks, to the normals
+/// alone, like a fillet of radius 2R / a: a 45 degree chamfer edge like a fillet of radius
+/// 7 spacings. What still tells them apart is the shape of the points: across a crease the
+/// heights above the tangent plane follow |x| (a kink), across a fillet x^2 / 2r (a
+/// parabola), and the kink leaves three to six times the plane-fit residual. So a point stops
+/// the growing only when both its normals spread and its points bend like a crease.
 struct FirstOrderSegmentationOptions
 {
-    /// Degrees. A point grows its cluster only when the normals of all its k neighbours lie
-    /// within this angle of its own normal (its "normal spread"); other points can join a
-    /// cluster but not extend it, as PCL's region growing gates growth by curvature.
-    /// Why 30: PCA normals over k = 16 neighbours (a ball of radius R ~ 2.7 spacings) blur a
-    /// crease over about 2R, so across a crease turning the normal by a the spread reaches
-    /// ~0.6 a: ~55 degrees at a 90 degree edge, ~30 at a 45 degree one. On a fillet of radius
-    /// r the normal turns by R / r radians across the ball: 25 degrees at r = 6 spacings, 18 at
-    /// r = 9; noise of 0.3 spacing along the normal adds ~10. 30 keeps fillets of radius >= 6
-    /// spacings and noisy planes growing and stops at creases turning by about 60 degrees or
-    /// more (edges between faces meeting at 120 degrees or less).
-    double growAngle = 30.0;
+    /// Degrees. A point may stop the growing only when the normals of its k neighbours
+    /// spread more than this around its own (largest angle). Measured with k = 16: noise of
+    /// 0.3 spacing along the normal gives spreads of 10 degrees, up to 17; a 45 degree crease
+    /// 25-30, a 90 degree crease 50-65; a fillet of radius 8 spacings 16, of 6 spacings 23.
+    double growAngle = 20.0;
     /// Degrees. A neighbour joins the cluster of a growing point when their normals differ by
     /// less than this. Half the spread limit: the points on a crease, whose normals lie half
     /// way between those of the two faces, join neither face.
-    double joinAngle = 15.0;
+    double joinAngle = 10.0;
+    /// Spacings. A point may stop the growing only when its surface variation, less the
+    /// cloud's median as the noise floor, exceeds that of a spherical blend of this radius,
+    /// R^2 / (24 r^2) (a cylindrical fillet gives R^2 / (32 r^2), less). Fillets and corner
+    /// blends of this radius or more stay smooth; a clean crease reaches 0.14 tan^2(a/2) at
+    /// its centre, so creases turning the normal by more than ~40 degrees stop the growing.
+    double minFilletRadius = 5.0;
+    /// ... and exceeds this many standard deviations of the noise on the surface variation
+    /// (estimated from the cloud's median absolute deviation). On a clean cloud this is
+    /// nothing; with noise of 0.3 spacing along the normal it is ~0.02, which a 90 degree
+    /// crease (0.08) passes and a 45 degree one (0.02) only partly.
+    double noiseMargin = 2.0;
     /// A cluster is large (a surface patch) when at least this many of its points have all
     /// their k neighbours inside it; otherwise it is small and its points are candidates.
     /// Counting whole neighbourhoods rather than points is the design's reading of "small":
@@ -51,18 +64,28 @@ struct FirstOrderSegmentation
     /// #P normal spread of every point in degrees: the largest angle between its normal and
     /// those of its k neighbours (normals are unoriented, so at most 90).
     Eigen::VectorXd spread;
+    /// #P surface variation lambda0 / (lambda0 + lambda1 + lambda2) of the point and its
+    /// neighbours, read along the given normal, less the cloud's median.
+    Eigen::VectorXd planarityExcess;
+    /// The excess above which a point may stop the growing (minFilletRadius, noiseMargin).
+    double minExcess = 0.0;
 
     int clusterCount() const { return static_cast<int>(clusterSize.size()); }
     bool isCandidate(Eigen::Index i) const { return smallCluster[cluster[i]] != 0; }
 };
 
 /// Segments a cloud by region growing on its (unoriented) normals.
+///   P        #P by 3 points
 ///   normals  #P by 3 unit normals, e.g. from pcaNormals()
 ///   N        the k nearest neighbours the normals were estimated on
-/// Every point ends in exactly one cluster; the result does not depend on the point order
-/// beyond cluster numbering. Throws std::invalid_argument when the sizes disagree, a normal
-/// is not finite or the angles are not in (0, 90].
-FirstOrderSegmentation segmentByNormals(const NormalMatrix& normals, const Neighbourhoods& N,
+///   spacing  the cloud's mean point spacing (meanSpacing())
+/// A point grows its cluster unless both its normal spread and its planarity excess are
+/// high; every point ends in exactly one cluster, and the result does not depend on the
+/// point order beyond cluster numbering. Throws std::invalid_argument when the sizes
+/// disagree, a normal is not finite, the spacing is not positive or an angle is not in
+/// (0, 90].
+FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix& normals,
+                                        const Neighbourhoods& N, double spacing,
                                         const FirstOrderSegmentationOptions& options = {});
 
 } // namespace featurelines

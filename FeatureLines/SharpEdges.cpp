@@ -113,9 +113,13 @@ public:
     Placement place(int node, const std::vector<int>& seeds, const Eigen::Vector3d& centre,
                     bool junction)
     {
-        const std::vector<Plane> planes = fitNearbyClusters(node, seeds, centre);
+        // A junction's node can sit a few spacings along one edge from the corner (where the
+        // reconnection met the line), so its search reaches that much farther for the third
+        // face.
+        const std::vector<Plane> planes =
+            fitNearbyClusters(node, seeds, centre, junction ? radius_ + maxShift_ : radius_);
         Placement best;
-        double bestShift = maxShift_;
+        double bestShift = radius_;
         if (junction) {
             for (std::size_t a = 0; a < planes.size(); ++a) {
                 for (std::size_t b = a + 1; b < planes.size(); ++b) {
@@ -144,6 +148,7 @@ public:
                 return best;
             }
         }
+        bestShift = maxShift_;
         // The pair of faces whose crease passes closest to the node: near a corner every
         // pair's crease passes close, and any of them is then a good place.
         for (std::size_t a = 0; a < planes.size(); ++a) {
@@ -166,10 +171,10 @@ public:
     }
 
 private:
-    /// Planes fitted to the points of every large cluster within fitRadius of the centre,
+    /// Planes fitted to the points of every large cluster within `radius` of the centre,
     /// reached from the node's points through the neighbourhoods.
     std::vector<Plane> fitNearbyClusters(int node, const std::vector<int>& seeds,
-                                         const Eigen::Vector3d& centre)
+                                         const Eigen::Vector3d& centre, double radius)
     {
         const FirstOrderSegmentation& s = sharp_.segmentation;
         std::vector<int> queue;
@@ -180,7 +185,7 @@ private:
             }
         }
         std::unordered_map<int, std::vector<Eigen::Vector3d>> byCluster;
-        const double r2 = radius_ * radius_;
+        const double r2 = radius * radius;
         for (std::size_t q = 0; q < queue.size(); ++q) {
             const int i = queue[q];
             const int c = s.cluster[i];
@@ -282,7 +287,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     requireSurface(P, spacing);
 
     SharpEdges result;
-    result.segmentation = segmentByNormals(normals, N, options.segmentation);
+    result.segmentation = segmentByNormals(P, normals, N, spacing, options.segmentation);
     const FirstOrderSegmentation& s = result.segmentation;
     result.isSharpCandidate.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) {

@@ -35,7 +35,7 @@ struct SharpEdgeOptions
     /// and the node moves onto the intersection of two of them (three at a junction). 3.5
     /// spacings reach past the candidate band (about 3 wide) to 2 spacings of each face while
     /// a curved face (a hole of radius 7 spacings) still deviates from its plane by < 1/2.
-    double fitRadius = 3.5;
+    double fitRadius = 5.0;
     /// A cluster needs this many points within fitRadius to be fitted (a plane of 3 points
     /// fits anything).
     int minFitPoints = 6;

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The boundary of open clouds whose border is known: a square patch has one loop along its
+// perimeter, a square with a round hole two, an open tube one per rim; closed surfaces none.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "FeatureLines/Boundary.h"
+#include "FeatureLines/Normals.h"
+#include "SampledShapes.h"
+
+using namespace featurelines;
+
+namespace {
+
+struct BoundaryRun
+{
+    Boundary boundary;
+    double spacing;
+};
+
+BoundaryRun extract(const PointMatrix& P)
+{
+    const Neighbourhoods N = nearestNeighbours(P);
+    const double spacing = meanSpacing(N);
+    const NormalEstimate normals = pcaNormals(P, N);
+    return {extractBoundary(P, normals.normals, N, spacing), spacing};
+}
+
+/// Distance from (x, y) to the outline of the square [-h, h]^2.
+double distanceToSquareOutline(double x, double y, double h)
+{
+    const double dx = std::abs(x) - h, dy = std::abs(y) - h;
+    if (dx <= 0.0 && dy <= 0.0) {
+        return -std::max(dx, dy);
+    }
+    return std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));
+}
+
+double loopLength(const Polyline& line)
+{
+    double length = 0.0;
+    const Eigen::Index m = line.points.rows();
+    for (Eigen::Index i = 0; i < m; ++i) {
+        length += (line.points.row((i + 1) % m) - line.points.row(i)).norm();
+    }
+    return length;
+}
+
+} // namespace
+
+TEST(Boundary, SquarePatchHasOneLoopAlongItsPerimeter)
+{
+    const double size = 30.0, h = size / 2;
+    const shapes::Sample plane = shapes::plane(size, 1.0, 1);
+    const BoundaryRun r = extract(plane.points);
+
+    // Boundary points are the outer row of the grid; the outer row (within half a grid step
+    // of the outline, given the jitter of 0.2) is found entirely.
+    int outerRow = 0, outerFound = 0;
+    for (Eigen::Index i = 0; i < plane.size(); ++i) {
+        const double d = distanceToSquareOutline(plane.points(i, 0), plane.points(i, 1), h);
+        if (r.boundary.isBoundary[i]) {
+            EXPECT_LT(d, 1.0) << "boundary point inside the patch at " << i;
+        }
+        if (d < 0.5) {
+            ++outerRow;
+            outerFound += r.boundary.isBoundary[i] ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(outerFound, outerRow);
+
+    ASSERT_EQ(r.boundary.network.lines.size(), 1u);
+    const Polyline& loop = r.boundary.network.lines[0];
+    EXPECT_TRUE(loop.closed);
+    EXPECT_EQ(r.boundary.network.junctions.rows(), 0);
+    // Within the outer row (half a grid step in), the corners cut by about a spacing.
+    for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
+        EXPECT_LT(distanceToSquareOutline(loop.points(i, 0), loop.points(i, 1), h),
+                  2.0 * r.spacing);
+    }
+    // The outer row runs half a step inside the outline; corners are cut a little.
+    EXPECT_NEAR(loopLength(loop), 4.0 * (size - 1.0), 0.05 * 4.0 * size);
+}
+
+TEST(Boundary, HoleGivesASecondLoop)
+{
+    const double size = 40.0, hole = 8.0;
+    const shapes::Sample plane = shapes::plane(size, 1.0, 2);
+    std::vector<Eigen::Index> keep;
+    for (Eigen::Index i = 0; i < plane.size(); ++i) {
+        if (plane.points.row(i).head<2>().norm() > hole) {
+            keep.push_back(i);
+        }
+    }
+    PointMatrix P(static_cast<Eigen::Index>(keep.size()), 3);
+    for (size_t i = 0; i < keep.size(); ++i) {
+        P.row(i) = plane.points.row(keep[i]);
+    }
+    const BoundaryRun r = extract(P);
+    ASSERT_EQ(r.boundary.network.lines.size(), 2u);
+    int aroundHole = 0;
+    for (const Polyline& loop : r.boundary.network.lines) {
+        EXPECT_TRUE(loop.closed);
+        const double meanRadius = loop.points.leftCols(2).rowwise().norm().mean();
+        if (meanRadius < size / 4) {
+            ++aroundHole;
+            for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
+                EXPECT_NEAR(loop.points.row(i).head<2>().norm(), hole, 1.5 * r.spacing);
+            }
+        }
+    }
+    EXPECT_EQ(aroundHole, 1);
+}
+
+TEST(Boundary, OpenTubeHasOneLoopPerRim)
+{
+    const double radius = 8.0, height = 24.0;
+    const shapes::Sample tube = shapes::cylinder(radius, height, 1.0, 3);
+    const BoundaryRun r = extract(tube.points);
+    ASSERT_EQ(r.boundary.network.lines.size(), 2u);
+    std::vector<double> heights;
+    for (const Polyline& loop : r.boundary.network.lines) {
+        EXPECT_TRUE(loop.closed);
+        heights.push_back(loop.points.col(2).mean());
+        EXPECT_NEAR(loopLength(loop), 2.0 * 3.14159265358979 * radius, 0.1 * 2.0 * 3.14159 * radius);
+    }
+    std::sort(heights.begin(), heights.end());
+    EXPECT_NEAR(heights[0], -height / 2, 1.0 * r.spacing);
+    EXPECT_NEAR(heights[1], height / 2, 1.0 * r.spacing);
+}
+
+TEST(Boundary, ClosedSurfacesHaveNone)
+{
+    for (const shapes::Sample& closed :
+         {shapes::sphere(12.0, 1.0, 4), shapes::cube(20.0, 1.0, 5)}) {
+        const BoundaryRun r = extract(closed.points);
+        int flagged = 0;
+        for (char b : r.boundary.isBoundary) {
+            flagged += b;
+        }
+        EXPECT_EQ(flagged, 0);
+        EXPECT_TRUE(r.boundary.network.lines.empty());
+    }
+}
+
+TEST(Boundary, BadInputThrows)
+{
+    const shapes::Sample plane = shapes::plane(10.0, 1.0, 1);
+    const Neighbourhoods N = nearestNeighbours(plane.points);
+    const NormalEstimate normals = pcaNormals(plane.points, N);
+    EXPECT_THROW(boundaryPoints(plane.points, normals.normals.topRows(3), N), std::invalid_argument);
+    EXPECT_THROW(extractBoundary(plane.points, normals.normals, N, -1.0), std::invalid_argument);
+    BoundaryOptions zero;
+    zero.minGapAngle = 0.0;
+    EXPECT_THROW(boundaryPoints(plane.points, normals.normals, N, zero), std::invalid_argument);
+    // Every neighbour on the point itself: no direction, no boundary, no crash.
+    const PointMatrix same = PointMatrix::Ones(30, 3);
+    const Neighbourhoods SN = nearestNeighbours(same);
+    const NormalMatrix up = NormalMatrix::Ones(30, 3).rowwise().normalized();
+    for (char b : boundaryPoints(same, up, SN)) {
+        EXPECT_EQ(b, 0);
+    }
+}

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The cluster graph on hand-made bands of candidate points whose lines are known: a square
+// ring closes into one loop, a cross meets at one junction, a broken ring is reconnected, a
+// spur is pruned, separate rings stay separate, a speck is dropped.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "FeatureLines/ClusterGraph.h"
+
+using namespace featurelines;
+
+namespace {
+
+/// Points on a jittered grid of unit spacing in the plane z = 0, kept where `inside` holds.
+template <class Inside>
+PointMatrix band(double extent, Inside inside, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    std::vector<Eigen::RowVector3d> kept;
+    for (double x = -extent; x <= extent; x += 1.0) {
+        for (double y = -extent; y <= extent; y += 1.0) {
+            const Eigen::RowVector3d p(x + jitter(rng), y + jitter(rng), 0.0);
+            if (inside(p.x(), p.y())) {
+                kept.push_back(p);
+            }
+        }
+    }
+    PointMatrix P(static_cast<Eigen::Index>(kept.size()), 3);
+    for (size_t i = 0; i < kept.size(); ++i) {
+        P.row(i) = kept[i];
+    }
+    return P;
+}
+
+/// The square ring |max(|x|, |y|) - 15| < 1.5: a band three points wide around a square of
+/// side 30.
+bool squareRing(double x, double y)
+{
+    return std::abs(std::max(std::abs(x), std::abs(y)) - 15.0) < 1.5;
+}
+
+struct GraphRun
+{
+    ClusterGraph graph;
+    double spacing;
+};
+
+/// Every point a candidate cluster of its own, as the boundary and Sec. 3 give them.
+GraphRun runGraph(const PointMatrix& P, const ClusterGraphOptions& options = {})
+{
+    const Neighbourhoods N = nearestNeighbours(P);
+    std::vector<int> cluster(P.rows());
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        cluster[i] = static_cast<int>(i);
+    }
+    const double spacing = meanSpacing(N);
+    return {buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 1), spacing, options),
+            spacing};
+}
+
+double polylineLength(const Polyline& line)
+{
+    double length = 0.0;
+    const Eigen::Index m = line.points.rows();
+    for (Eigen::Index i = 0; i + 1 < m; ++i) {
+        length += (line.points.row(i + 1) - line.points.row(i)).norm();
+    }
+    if (line.closed && m > 1) {
+        length += (line.points.row(0) - line.points.row(m - 1)).norm();
+    }
+    return length;
+}
+
+} // namespace
+
+TEST(ClusterGraph, SquareRingBandBecomesOneClosedLoopOnItsCentreLine)
+{
+    const PointMatrix P = band(18.0, squareRing, 1);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.lines.size(), 1u);
+    const Polyline& loop = r.graph.network.lines[0];
+    EXPECT_TRUE(loop.closed);
+    EXPECT_EQ(loop.startJunction, -1);
+    EXPECT_EQ(r.graph.network.junctions.rows(), 0);
+    EXPECT_EQ(r.graph.counts.freeEnds, 0);
+    // The spanning tree breaks the ring once; reconnection closes it.
+    EXPECT_GE(r.graph.counts.reconnections, 1);
+    for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
+        const double d = std::max(std::abs(loop.points(i, 0)), std::abs(loop.points(i, 1)));
+        EXPECT_NEAR(d, 15.0, 2.0) << "vertex " << i << " strays from the band's centre line";
+    }
+    // Corners get cut by the smoothing a little (hence 2 above); the length stays near 4 x 30.
+    EXPECT_NEAR(polylineLength(loop), 120.0, 8.0);
+}
+
+TEST(ClusterGraph, CrossMeetsAtOneJunction)
+{
+    const PointMatrix P = band(20.0, [](double x, double y) {
+        return (std::abs(x) < 1.5 && std::abs(y) < 18.0) || (std::abs(y) < 1.5 && std::abs(x) < 18.0);
+    }, 2);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.junctions.rows(), 1);
+    EXPECT_LT(r.graph.network.junctions.row(0).norm(), 2.0) << "the junction is at the crossing";
+    ASSERT_EQ(r.graph.network.lines.size(), 4u);
+    for (const Polyline& line : r.graph.network.lines) {
+        EXPECT_FALSE(line.closed);
+        // One end on the junction, the other free: the arms end in nothing.
+        EXPECT_TRUE((line.startJunction == 0) != (line.endJunction == 0));
+        EXPECT_NEAR(polylineLength(line), 18.0, 3.0);
+    }
+}
+
+TEST(ClusterGraph, GapInARingIsReconnected)
+{
+    // A gap of 5 spacings: wider than G_extended bridges, within the reconnection radius.
+    const PointMatrix P = band(18.0, [](double x, double y) {
+        return squareRing(x, y) && !(x > 10.0 && x < 15.5 && y > 0.0);
+    }, 3);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.lines.size(), 1u);
+    EXPECT_TRUE(r.graph.network.lines[0].closed);
+    EXPECT_EQ(r.graph.counts.freeEnds, 0);
+}
+
+TEST(ClusterGraph, ShortSpurIsPrunedLongBranchIsKept)
+{
+    // A ring with a spur 3 spacings long (pruned) and an arm 12 long (a real line).
+    const PointMatrix P = band(30.0, [](double x, double y) {
+        const bool spur = std::abs(y) < 1.0 && x > 16.0 && x < 19.5;
+        const bool arm = std::abs(x) < 1.0 && y < -16.0 && y > -28.5;
+        return squareRing(x, y) || spur || arm;
+    }, 4);
+    const GraphRun r = runGraph(P);
+    EXPECT_GE(r.graph.counts.prunedBranches, 1);
+    ASSERT_EQ(r.graph.network.junctions.rows(), 1) << "only the arm meets the ring";
+    EXPECT_NEAR(r.graph.network.junctions(0, 1), -15.0, 2.0);
+    EXPECT_NEAR(r.graph.network.junctions(0, 0), 0.0, 2.0);
+}
+
+TEST(ClusterGraph, SeparateRingsStaySeparateAndSpecksAreDropped)
+{
+    const PointMatrix P = band(60.0, [](double x, double y) {
+        const bool left = squareRing(x + 30.0, y);
+        const bool right = squareRing(x - 30.0, y);
+        const bool speck = std::abs(x) < 1.5 && std::abs(y - 40.0) < 1.5;
+        return left || right || speck;
+    }, 5);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.lines.size(), 2u);
+    EXPECT_TRUE(r.graph.network.lines[0].closed);
+    EXPECT_TRUE(r.graph.network.lines[1].closed);
+    EXPECT_GE(r.graph.counts.droppedComponents, 1);
+    EXPECT_NE(r.graph.network.lines[0].points(0, 0) > 0, r.graph.network.lines[1].points(0, 0) > 0);
+}
+
+TEST(ClusterGraph, ClustersWithoutCandidatesAreLeftOutAndLabelsCarryOver)
+{
+    // Two rings; the right one's points belong to non-candidate clusters, the left one's to
+    // candidates labelled 7.
+    const PointMatrix P = band(60.0, [](double x, double y) {
+        return squareRing(x + 30.0, y) || squareRing(x - 30.0, y);
+    }, 6);
+    const Neighbourhoods N = nearestNeighbours(P);
+    std::vector<int> cluster(P.rows());
+    std::vector<char> candidate(P.rows());
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        cluster[i] = static_cast<int>(i);
+        candidate[i] = P(i, 0) < 0.0 ? 1 : 0;
+    }
+    const std::vector<int> labels(P.rows(), 7);
+    const ClusterGraph g = buildClusterGraph(P, N, cluster, candidate, meanSpacing(N), {}, labels);
+    ASSERT_EQ(g.network.lines.size(), 1u);
+    EXPECT_EQ(g.network.lines[0].label, 7);
+    EXPECT_LT(g.network.lines[0].points.col(0).maxCoeff(), 0.0);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        if (!candidate[i]) {
+            EXPECT_EQ(g.nodeOfPoint[i], -1);
+        }
+    }
+}
+
+TEST(ClusterGraph, ResamplingIsEvenAndKeepsTheEnds)
+{
+    PointMatrix line(3, 3);
+    line << 0, 0, 0, 4, 0, 0, 10, 0, 0;
+    const PointMatrix open = resamplePolyline(line, false, 1.0);
+    ASSERT_EQ(open.rows(), 11);
+    for (Eigen::Index i = 0; i < open.rows(); ++i) {
+        EXPECT_NEAR(open(i, 0), static_cast<double>(i), 1e-12);
+    }
+    PointMatrix square(4, 3);
+    square << 0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0;
+    const PointMatrix loop = resamplePolyline(square, true, 0.5);
+    ASSERT_EQ(loop.rows(), 16) << "perimeter 8 at step 0.5, first vertex not repeated";
+    for (Eigen::Index i = 0; i < loop.rows(); ++i) {
+        EXPECT_NEAR((loop.row((i + 1) % loop.rows()) - loop.row(i)).norm(), 0.5, 1e-12);
+    }
+}
+
+TEST(ClusterGraph, BadInputThrows)
+{
+    const PointMatrix P = band(5.0, [](double, double) { return true; }, 7);
+    const Neighbourhoods N = nearestNeighbours(P);
+    const std::vector<char> candidate(P.rows(), 1);
+    std::vector<int> cluster(P.rows(), 0);
+    EXPECT_THROW(buildClusterGraph(P, N, std::vector<int>(3, 0), candidate, 1.0),
+                 std::invalid_argument);
+    cluster[2] = static_cast<int>(P.rows()); // no such cluster
+    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0), std::invalid_argument);
+    cluster[2] = 0;
+    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 0.0), std::invalid_argument);
+    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, std::vector<int>(2, 0)),
+                 std::invalid_argument);
+    // Nothing marked as candidate: an empty network, no crash.
+    const ClusterGraph none =
+        buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 0), 1.0);
+    EXPECT_TRUE(none.network.lines.empty());
+}

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// First-order segmentation on shapes whose answer is known: a plane and a fillet-rounded cube
+// are one smooth patch each; a cube is six faces with candidates only along its edges.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "FeatureLines/FirstOrderSegmentation.h"
+#include "FeatureLines/Normals.h"
+#include "SampledShapes.h"
+
+using namespace featurelines;
+
+namespace {
+
+struct Prepared
+{
+    Neighbourhoods neighbours;
+    NormalEstimate normals;
+    double spacing = 0.0;
+};
+
+Prepared prepare(const shapes::Sample& s)
+{
+    Prepared p;
+    p.neighbours = nearestNeighbours(s.points);
+    p.spacing = meanSpacing(p.neighbours);
+    p.normals = pcaNormals(s.points, p.neighbours);
+    return p;
+}
+
+FirstOrderSegmentation segment(const shapes::Sample& s, const Prepared& p)
+{
+    return segmentByNormals(s.points, p.normals.normals, p.neighbours, p.spacing);
+}
+
+int largeClusters(const FirstOrderSegmentation& seg)
+{
+    int count = 0;
+    for (char small : seg.smallCluster) {
+        count += small ? 0 : 1;
+    }
+    return count;
+}
+
+/// Distance from a point to the nearest edge of the cube [-h, h]^3.
+double distanceToCubeEdge(const Eigen::RowVector3d& p, double h)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        const double along = std::max(0.0, std::abs(p[axis]) - h);
+        const double du = std::abs(p[u]) - h, dv = std::abs(p[v]) - h;
+        best = std::min(best, std::sqrt(along * along + du * du + dv * dv));
+    }
+    return best;
+}
+
+} // namespace
+
+TEST(FirstOrderSegmentation, PlaneIsOneClusterWithoutCandidates)
+{
+    for (double sigma : {0.0, 0.3}) {
+        shapes::Sample plane = shapes::plane(30.0, 1.0, 1);
+        shapes::addNormalNoise(plane, sigma, 2);
+        const Prepared p = prepare(plane);
+        const FirstOrderSegmentation seg = segment(plane, p);
+        EXPECT_EQ(largeClusters(seg), 1) << "noise sigma " << sigma;
+        int candidates = 0;
+        for (Eigen::Index i = 0; i < plane.size(); ++i) {
+            candidates += seg.isCandidate(i) ? 1 : 0;
+        }
+        EXPECT_EQ(candidates, 0) << "noise sigma " << sigma;
+    }
+}
+
+TEST(FirstOrderSegmentation, CubeHasSixFacesAndCandidatesOnlyAlongItsEdges)
+{
+    const double edge = 30.0;
+    const shapes::Sample cube = shapes::cube(edge, 1.0, 3);
+    const Prepared p = prepare(cube);
+    const FirstOrderSegmentation seg = segment(cube, p);
+    ASSERT_EQ(seg.cluster.size(), static_cast<size_t>(cube.size()));
+    EXPECT_EQ(largeClusters(seg), 6);
+
+    // Every face's points away from the edges share one large cluster, a different one per
+    // face; candidates lie on the blurred crease, within the reach of a neighbourhood.
+    std::map<int, std::map<int, int>> clustersOfFace;
+    int candidates = 0;
+    for (Eigen::Index i = 0; i < cube.size(); ++i) {
+        const double d = distanceToCubeEdge(cube.points.row(i), edge / 2) / p.spacing;
+        if (seg.isCandidate(i)) {
+            ++candidates;
+            EXPECT_LT(d, 3.0) << "candidate far from every edge at point " << i;
+        }
+        if (d > 4.0) {
+            EXPECT_FALSE(seg.isCandidate(i)) << "point " << i;
+            ++clustersOfFace[cube.part[i]][seg.cluster[i]];
+        }
+    }
+    EXPECT_GT(candidates, 0);
+    std::set<int> faceClusters;
+    for (const auto& [face, clusters] : clustersOfFace) {
+        EXPECT_EQ(clusters.size(), 1u) << "face " << face << " is split";
+        faceClusters.insert(clusters.begin()->first);
+    }
+    EXPECT_EQ(faceClusters.size(), 6u);
+
+    // Cluster sizes add up and small clusters are exactly those of the candidates.
+    long total = 0;
+    for (int size : seg.clusterSize) {
+        total += size;
+    }
+    EXPECT_EQ(total, cube.size());
+}
+
+TEST(FirstOrderSegmentation, FilletsOfSixSpacingsKeepTheRoundedCubeOnePatch)
+{
+    // The normals turn by 90 degrees across each fillet, but smoothly: no crease stops the
+    // growing, so faces, fillets and corner blends are one cluster.
+    const shapes::Sample rounded = shapes::roundedCube(30.0, 6.0, 1.0, 5);
+    const Prepared p = prepare(rounded);
+    const double radiusInSpacings = 6.0 / p.spacing;
+    ASSERT_GE(radiusInSpacings, 6.0);
+    const FirstOrderSegmentation seg = segment(rounded, p);
+    EXPECT_EQ(largeClusters(seg), 1);
+    int candidates = 0;
+    for (Eigen::Index i = 0; i < rounded.size(); ++i) {
+        candidates += seg.isCandidate(i) ? 1 : 0;
+    }
+    EXPECT_LT(candidates, rounded.size() / 100) << "at most stray points, no band";
+}
+
+TEST(FirstOrderSegmentation, SameInputSameClusters)
+{
+    const shapes::Sample cube = shapes::cube(20.0, 1.0, 7);
+    const Prepared p = prepare(cube);
+    const FirstOrderSegmentation a = segment(cube, p);
+    const FirstOrderSegmentation b = segment(cube, p);
+    EXPECT_EQ(a.cluster, b.cluster);
+    EXPECT_EQ(a.smallCluster, b.smallCluster);
+}
+
+TEST(FirstOrderSegmentation, BadInputThrows)
+{
+    const shapes::Sample plane = shapes::plane(10.0, 1.0, 1);
+    const Prepared p = prepare(plane);
+    NormalMatrix fewer = p.normals.normals.topRows(plane.size() - 1);
+    EXPECT_THROW(segmentByNormals(plane.points, fewer, p.neighbours, p.spacing),
+                 std::invalid_argument);
+    NormalMatrix broken = p.normals.normals;
+    broken(3, 1) = std::nan("");
+    EXPECT_THROW(segmentByNormals(plane.points, broken, p.neighbours, p.spacing),
+                 std::invalid_argument);
+    EXPECT_THROW(segmentByNormals(plane.points, p.normals.normals, p.neighbours, 0.0),
+                 std::invalid_argument);
+    FirstOrderSegmentationOptions zeroAngle;
+    zeroAngle.growAngle = 0.0;
+    EXPECT_THROW(segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing,
+                                  zeroAngle),
+                 std::invalid_argument);
+}
