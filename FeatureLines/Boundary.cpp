@@ -21,6 +21,25 @@ int threadCount(int requested)
     return requested > 0 ? requested : omp_get_max_threads();
 }
 
+/// A number in [0, 4) that grows with the angle of (x, y) from +x, anticlockwise (the
+/// "diamond angle"): it orders directions like the angle does, without trigonometry.
+double pseudoAngle(double x, double y)
+{
+    if (y >= 0.0) {
+        return x >= 0.0 ? y / (x + y) : 1.0 - x / (y - x);
+    }
+    return x < 0.0 ? 2.0 - y / (-x - y) : 3.0 + x / (x - y);
+}
+
+/// Which of the eight 45 degree sectors, counted anticlockwise from +x, holds (x, y).
+int octant(double x, double y)
+{
+    if (y >= 0.0) {
+        return x > 0.0 ? (y < x ? 0 : 1) : (y > -x ? 2 : 3);
+    }
+    return x < 0.0 ? (-y < -x ? 4 : 5) : (-y > x ? 6 : 7);
+}
+
 } // namespace
 
 std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& normals,
@@ -39,10 +58,12 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
     }
     const int k = N.k();
     const double minGap = options.minGapAngle * pi / 180.0;
+    const double cosMinGap = std::cos(minGap);
     std::vector<char> boundary(n, 0);
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        std::vector<double> angles(k);
+        std::vector<double> xs(k), ys(k);
+        std::vector<std::pair<double, int>> order(k);
 #pragma omp for schedule(static, 4096)
         for (Eigen::Index i = 0; i < n; ++i) {
             // A frame of the tangent plane.
@@ -53,23 +74,50 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
             const Eigen::Vector3d v = normal.cross(u);
             const double tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
             int count = 0;
+            unsigned sectors = 0;
             for (int j = 0; j < k; ++j) {
                 const Eigen::Vector3d d = (P.row(N.indices(i, j)) - P.row(i)).transpose();
-                const double x = d.dot(u);
-                const double y = d.dot(v);
-                if (std::abs(x) + std::abs(y) > tiny) {
-                    angles[count++] = std::atan2(y, x);
+                xs[j] = d.dot(u);
+                ys[j] = d.dot(v);
+                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
+                    sectors |= 1u << octant(xs[j], ys[j]);
+                    ++count;
                 }
             }
-            if (count == 0) {
+            // A gap wider than 90 degrees contains a whole 45 degree sector: with all eight
+            // sectors occupied there is none, and no angle needs computing (most points).
+            if (count == 0 || (sectors == 0xFF && options.minGapAngle >= 90.0)) {
                 continue;
             }
-            std::sort(angles.begin(), angles.begin() + count);
-            double widest = angles[0] + 2.0 * pi - angles[count - 1];
-            for (int j = 1; j < count; ++j) {
-                widest = std::max(widest, angles[j] - angles[j - 1]);
+            // Otherwise order the directions by angle and look for a gap wider than the
+            // limit between consecutive ones, comparing cosines instead of angles.
+            count = 0;
+            for (int j = 0; j < k; ++j) {
+                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
+                    order[count++] = {pseudoAngle(xs[j], ys[j]), j};
+                }
             }
-            boundary[i] = widest > minGap ? 1 : 0;
+            std::sort(order.begin(), order.begin() + count);
+            bool wide = count == 1;
+            for (int a = 0; a < count && !wide; ++a) {
+                const int from = order[a].second;
+                const int to = order[(a + 1) % count].second;
+                const double dot = xs[from] * xs[to] + ys[from] * ys[to];
+                const double cross = xs[from] * ys[to] - ys[from] * xs[to];
+                const double cosine =
+                    dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
+                                    (xs[to] * xs[to] + ys[to] * ys[to]));
+                if (cross > 0.0) {
+                    // The gap is below 180 degrees: acos(cosine).
+                    wide = minGap < pi && cosine < cosMinGap;
+                }
+                else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
+                    // At least 180 degrees: 2 pi - acos(cosine) (all the circle when the last
+                    // direction comes back onto the first).
+                    wide = minGap <= pi || cosine > cosMinGap;
+                }
+            }
+            boundary[i] = wide ? 1 : 0;
         }
     }
     return boundary;

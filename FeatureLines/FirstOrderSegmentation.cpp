@@ -110,27 +110,32 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     // adds its variance to lambda0 everywhere, so the cloud's median (most points lie on
     // smooth patches) is the noise floor, and its spread (the median absolute deviation) how
     // far noise alone reaches above it.
-    result.planarityExcess = variation;
-    std::vector<double> sorted(variation.data(), variation.data() + n);
-    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
-    const double median = sorted[n / 2];
-    result.planarityExcess.array() -= median;
-    for (double& v : sorted) {
-        v = std::abs(v - median);
+    // Medians of an evenly strided sample of at most ~100 000 points are as good and cheap.
+    const Eigen::Index stride = std::max<Eigen::Index>(1, n / 100000);
+    auto median = [](std::vector<double>& v) {
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    std::vector<double> sample;
+    for (Eigen::Index i = 0; i < n; i += stride) {
+        sample.push_back(variation(i));
     }
-    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
-    const double noiseDeviation = 1.4826 * sorted[n / 2]; // the normal law's sigma from its MAD
+    const double floor = median(sample);
+    result.planarityExcess = variation.array() - floor;
+    for (double& v : sample) {
+        v = std::abs(v - floor);
+    }
+    const double noiseDeviation = 1.4826 * median(sample); // the normal law's sigma from its MAD
 
     // A sphere of radius r sampled over a ball of radius R has surface variation
     // R^2 / (24 r^2) (heights rho^2 / 2r over the disc), a cylinder R^2 / (32 r^2); R is the
     // typical distance to the k-th neighbour.
-    std::vector<double> reach(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        reach[i] = N.squaredDistances(i, k - 1);
+    std::vector<double> reach;
+    for (Eigen::Index i = 0; i < n; i += stride) {
+        reach.push_back(N.squaredDistances(i, k - 1));
     }
-    std::nth_element(reach.begin(), reach.begin() + n / 2, reach.end());
     const double filletRadius = options.minFilletRadius * spacing;
-    result.minExcess = std::max(reach[n / 2] / (24.0 * filletRadius * filletRadius),
+    result.minExcess = std::max(median(reach) / (24.0 * filletRadius * filletRadius),
                                 options.noiseMargin * noiseDeviation);
 
     std::vector<char> grows(n, 0);
@@ -146,29 +151,36 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     // result does not depend on the choice of seeds.
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
-    // Points that cannot grow join the cluster of the growing neighbour whose normal is
-    // closest to theirs (the first such neighbour on a tie).
-    std::vector<double> bestSimilarity(n, -1.0);
-    std::vector<int> owner(n, -1);
     for (Eigen::Index i = 0; i < n; ++i) {
         if (!grows[i]) {
             continue;
         }
         for (int j = 0; j < k; ++j) {
             const int q = N.indices(i, j);
-            const double s = similarity(i, q);
-            if (s < cosJoin) {
-                continue;
-            }
-            if (grows[q]) {
-                int a = findRoot(parent, static_cast<int>(i));
-                int b = findRoot(parent, q);
+            if (grows[q] && similarity(i, q) >= cosJoin) {
+                const int a = findRoot(parent, static_cast<int>(i));
+                const int b = findRoot(parent, q);
                 if (a != b) {
                     parent[std::max(a, b)] = std::min(a, b);
                 }
-            } else if (s > bestSimilarity[q]) {
-                bestSimilarity[q] = s;
-                owner[q] = static_cast<int>(i);
+            }
+        }
+    }
+    // A point that cannot grow joins the cluster of the growing neighbour whose normal is
+    // closest to its own (the nearest such neighbour on a tie).
+    std::vector<int> owner(n, -1);
+#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (grows[i]) {
+            continue;
+        }
+        double best = cosJoin;
+        for (int j = 0; j < k; ++j) {
+            const int q = N.indices(i, j);
+            const double s = similarity(i, q);
+            if (grows[q] && (s > best || (s == best && owner[i] < 0))) {
+                best = s;
+                owner[i] = q;
             }
         }
     }
