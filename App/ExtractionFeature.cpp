@@ -133,6 +133,7 @@ Extraction::Extraction()
     initParameter(BoundaryLines, "BoundaryLines");
     initParameter(GrowAngle, "GrowAngle");
     initParameter(JoinAngle, "JoinAngle");
+    initParameter(MinFilletRadius, "MinFilletRadius");
     initParameter(CreaseFitRadius, "CreaseFitRadius");
     initParameter(MinCreaseAngle, "MinCreaseAngle");
     initParameter(BoundaryGapAngle, "BoundaryGapAngle");

@@ -42,6 +42,7 @@ public:
     App::PropertyBool BoundaryLines;
     App::PropertyAngle GrowAngle;
     App::PropertyAngle JoinAngle;
+    App::PropertyFloatConstraint MinFilletRadius;
     App::PropertyFloatConstraint CreaseFitRadius;
     App::PropertyAngle MinCreaseAngle;
     App::PropertyAngle BoundaryGapAngle;

@@ -60,9 +60,9 @@ std::vector<Parameter> makeParameters()
          [](const ExtractionOptions& o) { return o.sharp.includeBoundary ? 1.0 : 0.0; },
          [](ExtractionOptions& o, double v) { o.sharp.includeBoundary = v != 0.0; }},
         {"GrowAngle", "Sharp edges",
-         "A point grows its surface cluster only when the normals of all its neighbours lie "
-         "within this angle of its own. 30 degrees stops at creases where the faces meet at 120 "
-         "degrees or less and keeps fillets of radius 6 spacings or more growing.",
+         "A point may stop the growing of a surface cluster only when the normals of its "
+         "neighbours spread more than this around its own (and its points bend like a crease, "
+         "see MinFilletRadius). Lower it to find shallower creases.",
          PK::Angle, PS::Regions, 1, 90, 1, nullptr,
          [](const ExtractionOptions& o) { return o.sharp.segmentation.growAngle; },
          [](ExtractionOptions& o, double v) { o.sharp.segmentation.growAngle = v; }},
@@ -72,6 +72,12 @@ std::vector<Parameter> makeParameters()
          PK::Angle, PS::Regions, 1, 90, 1, nullptr,
          [](const ExtractionOptions& o) { return o.sharp.segmentation.joinAngle; },
          [](ExtractionOptions& o, double v) { o.sharp.segmentation.joinAngle = v; }},
+        {"MinFilletRadius", "Sharp edges",
+         "Blends of this radius (x point spacing) or more are smooth edges, found by the "
+         "curvature histogram; tighter bends are sharp edges.",
+         PK::Spacing, PS::Regions, 0.5, 1000, 0.5, nullptr,
+         [](const ExtractionOptions& o) { return o.sharp.segmentation.minFilletRadius; },
+         [](ExtractionOptions& o, double v) { o.sharp.segmentation.minFilletRadius = v; }},
         {"CreaseFitRadius", "Sharp edges",
          "Sharp lines are moved onto the intersection of planes fitted to the faces within this "
          "radius (x point spacing).",
