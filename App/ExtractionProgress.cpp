@@ -51,6 +51,12 @@ bool ExtractionProgress::report(double done, const std::string& stage)
 {
     try {
         launcher->setText((title + ": " + stage).c_str());
+        if (nested) {
+            // The recompute's bar shows this extraction's share while it runs (the next object
+            // puts it back), and setProgress, unlike next, reaches the sequencer from a nested
+            // launcher: the GUI then handles its events and Esc is seen by wasCanceled() below.
+            launcher->setProgress(static_cast<size_t>(done * launcher->numberOfSteps()));
+        }
         const size_t target = std::min(totalSteps, static_cast<size_t>(done * totalSteps));
         while (steps < target) {
             launcher->next(true); // throws Base::AbortException when the user cancels

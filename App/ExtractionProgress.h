@@ -23,6 +23,9 @@ private:
     bool report(double done, const std::string& stage);
 
     std::string title;
+    /// Inside a document recompute FreeCAD's own "Recompute..." launcher is the outermost one
+    /// and this one's steps are ignored (Base/Sequencer.cpp).
+    bool nested = false;
     std::unique_ptr<Base::SequencerLauncher> launcher;
     size_t steps = 0;
 };
