@@ -79,6 +79,15 @@ double peakRssMiB()
     return static_cast<double>(usage.ru_maxrss) / 1024.0; // KiB on Linux
 }
 
+/// User plus system CPU seconds of all threads of the process so far.
+double cpuSeconds()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 double currentRssMiB()
 {
     std::ifstream statm("/proc/self/statm");
@@ -94,13 +103,18 @@ struct Row
 {
     std::string stage;
     std::vector<double> seconds;
+    /// CPU seconds of all threads: less sensitive than wall time to other processes on a
+    /// shared machine.
+    std::vector<double> cpu;
     double outputMiB = 0.0;
     double startRssMiB = 0.0;
     double peakRssMiB = 0.0;
 
-    double median() const
+    double median() const { return medianOf(seconds); }
+    double medianCpu() const { return medianOf(cpu); }
+
+    static double medianOf(std::vector<double> s)
     {
-        std::vector<double> s(seconds);
         std::sort(s.begin(), s.end());
         const std::size_t n = s.size();
         return n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
@@ -123,10 +137,12 @@ Row measure(const std::string& name, int runs, const std::function<std::size_t()
     for (int r = 0; r < runs; ++r) {
         malloc_trim(0);
         peakIsPerStage = resetPeakRss() && peakIsPerStage;
+        const double cpuStart = cpuSeconds();
         const auto start = std::chrono::steady_clock::now();
         const std::size_t bytes = stage();
         const auto stop = std::chrono::steady_clock::now();
         row.seconds.push_back(std::chrono::duration<double>(stop - start).count());
+        row.cpu.push_back(cpuSeconds() - cpuStart);
         row.outputMiB = static_cast<double>(bytes) / (1024.0 * 1024.0);
         row.peakRssMiB = std::max(row.peakRssMiB, peakRssMiB());
     }
@@ -276,13 +292,15 @@ void printMachine(std::ostream& out, int threads, int runs)
 
 void printTable(std::ostream& out, const Result& r, bool markdown)
 {
-    const std::vector<std::string> header{"stage", "median s", "min..max s", "Mpoints/s",
-                                          "output MiB", "peak RSS MiB", "peak - start MiB"};
+    const std::vector<std::string> header{"stage",      "median s",     "min..max s",
+                                          "CPU s",      "Mpoints/s",    "output MiB",
+                                          "peak RSS MiB", "peak - start MiB"};
     std::vector<std::vector<std::string>> cells;
     for (const Row& row : r.rows) {
         const auto [lo, hi] = std::minmax_element(row.seconds.begin(), row.seconds.end());
         cells.push_back({row.stage, fixed(row.median(), 3), fixed(*lo, 3) + ".." + fixed(*hi, 3),
-                         fixed(r.points / row.median() / 1e6, 2), fixed(row.outputMiB, 1),
+                         fixed(row.medianCpu(), 3), fixed(r.points / row.median() / 1e6, 2),
+                         fixed(row.outputMiB, 1),
                          fixed(row.peakRssMiB, 0),
                          fixed(std::max(0.0, row.peakRssMiB - row.startRssMiB), 0)});
     }
@@ -314,14 +332,26 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
         printLine(line);
     }
 
-    const double ours = r.row(knnStage).median() + r.row(normalsStage).median() +
-                        r.row(curvatureStage).median();
-    const double pcl = r.row(pclNormalsStage).median();
-    out << "\n(neighbours + normals + curvature) / PCL NormalEstimationOMP = " << fixed(ours, 3)
-        << " s / " << fixed(pcl, 3) << " s = " << fixed(ours / pcl, 2) << "\n"
-        << "kNN alone: nanoflann / PCL KdTreeFLANN = " << fixed(r.row(knnStage).median(), 3)
-        << " s / " << fixed(r.row(pclKnnStage).median(), 3) << " s = "
-        << fixed(r.row(knnStage).median() / r.row(pclKnnStage).median(), 2) << "\n";
+    const auto ratio = [&](const char* what, const std::vector<const char*>& ours,
+                           const char* theirs, double (Row::*measure)() const) {
+        double sum = 0.0;
+        for (const char* stage : ours) {
+            sum += (r.row(stage).*measure)();
+        }
+        const double pcl = (r.row(theirs).*measure)();
+        out << what << fixed(sum, 3) << " s / " << fixed(pcl, 3) << " s = " << fixed(sum / pcl, 2)
+            << (markdown ? "  \n" : "\n");
+    };
+    const std::vector<const char*> perPoint{knnStage, normalsStage, curvatureStage};
+    out << "\n";
+    ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, wall: ", perPoint,
+          pclNormalsStage, &Row::median);
+    ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, CPU: ", perPoint,
+          pclNormalsStage, &Row::medianCpu);
+    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage,
+          &Row::median);
+    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
+          &Row::medianCpu);
 }
 
 const std::vector<OptionSpec>& optionSpecs()
