@@ -2,6 +2,7 @@
 // Just enough JSON output for the featurelines tool: strings, numbers, arrays of numbers.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
