@@ -20,8 +20,8 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 constexpr int minimumNeighbours = 5;
 
 /// The fit is degenerate (neighbours collinear, or all in too few directions to fix a
-/// quadric) when the smallest pivot of the normal equations is this small relative to the
-/// largest. The coordinates are scaled to the unit disc, so this is a pure rounding level.
+/// quadric) when a pivot of the normal equations' Cholesky factor is this small relative to
+/// their largest diagonal entry. The coordinates are scaled to the unit disc, so this is a pure rounding level.
 constexpr double degeneratePivot = 1e-12;
 
 int threadCount(int requested)
@@ -69,29 +69,47 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
         const double scale = 1.0 / radius;
 
         // Normal equations A^T A c = A^T z of the rows (x^2, xy, y^2, x, y, 1); the point
-        // itself is the row (0, 0, 0, 0, 0, 1) with z = 0.
-        Matrix6d AtA = Matrix6d::Zero();
-        Vector6d Atz = Vector6d::Zero();
-        AtA(5, 5) = 1.0;
-        const Eigen::RowVector3d origin = P.row(i);
+        // itself is the row (0, 0, 0, 0, 0, 1) with z = 0. The 21 distinct products of the
+        // symmetric A^T A are summed by hand (Eigen's rankUpdate is not inlined).
+        double m[21] = {};
+        double r[6] = {};
+        m[20] = 1.0;
+        const double* o = P.row(i).data();
+        const int* neighbours = N.indices.row(i).data();
         for (int j = 0; j < k; ++j) {
-            const Eigen::Vector3d q = (P.row(N.indices(i, j)) - origin).transpose() * scale;
-            const double x = q.dot(u);
-            const double y = q.dot(v);
-            const double z = q.dot(w);
-            Vector6d row;
-            row << x * x, x * y, y * y, x, y, 1.0;
-            AtA.selfadjointView<Eigen::Lower>().rankUpdate(row);
-            Atz += z * row;
+            const double* p = P.row(neighbours[j]).data();
+            const double dx = (p[0] - o[0]) * scale, dy = (p[1] - o[1]) * scale,
+                         dz = (p[2] - o[2]) * scale;
+            const double x = dx * u(0) + dy * u(1) + dz * u(2);
+            const double y = dx * v(0) + dy * v(1) + dz * v(2);
+            const double z = dx * w(0) + dy * w(1) + dz * w(2);
+            const double row[6] = {x * x, x * y, y * y, x, y, 1.0};
+            int entry = 0;
+            for (int a = 0; a < 6; ++a) {
+                r[a] += z * row[a];
+                for (int b = a; b < 6; ++b) {
+                    m[entry++] += row[a] * row[b];
+                }
+            }
         }
-        const Eigen::LDLT<Matrix6d, Eigen::Lower> ldlt(AtA);
-        const Eigen::Matrix<double, 6, 1> pivots = ldlt.vectorD().cwiseAbs();
-        if (ldlt.info() != Eigen::Success ||
-            !(pivots.minCoeff() > degeneratePivot * pivots.maxCoeff())) {
+        Matrix6d AtA;
+        Vector6d Atz;
+        for (int a = 0, entry = 0; a < 6; ++a) {
+            Atz(a) = r[a];
+            for (int b = a; b < 6; ++b) {
+                AtA(b, a) = m[entry++]; // lower triangle, all the solver reads
+            }
+        }
+        // Cholesky without pivoting: A^T A is positive definite unless the fit is degenerate,
+        // which shows as a vanishing pivot.
+        const Eigen::LLT<Matrix6d, Eigen::Lower> llt(AtA);
+        const Vector6d pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+        if (llt.info() != Eigen::Success ||
+            !(pivots.minCoeff() > degeneratePivot * AtA.diagonal().maxCoeff())) {
             H(i) = 0.0;
             continue;
         }
-        const Vector6d c = ldlt.solve(Atz);
+        const Vector6d c = llt.solve(Atz);
         const double a = c(0), b = c(1), cc = c(2), d = c(3), e = c(4);
         // Mean curvature of the graph z(x, y) at the origin, gradient (d, e) included:
         // H = ((1 + e^2) z_xx - 2 d e z_xy + (1 + d^2) z_yy) / (2 (1 + d^2 + e^2)^(3/2)).

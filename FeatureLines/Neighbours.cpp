@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/Neighbours.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,19 +18,15 @@ namespace featurelines {
 
 namespace {
 
-/// The kd-tree holds a float copy of the cloud, centred on its bounding box: half the memory
-/// traffic of doubles during the queries, and centring keeps float's 24-bit mantissa for the
-/// cloud's extent rather than for its distance to the origin (scanner coordinates can be far
-/// from it). The distances returned are recomputed in double from P.
-using TreeScalar = float;
-
-/// nanoflann's dataset interface over a contiguous x y z array.
+/// nanoflann's dataset interface over a row-major #P by 3 array (x y z contiguous). The
+/// pointer is switched from the input to its copy in tree order once the tree is built.
 struct TreePoints
 {
-    std::vector<TreeScalar> xyz;
+    const double* xyz = nullptr;
+    std::size_t count = 0;
 
-    std::size_t kdtree_get_point_count() const { return xyz.size() / 3; }
-    TreeScalar kdtree_get_pt(std::uint32_t i, std::size_t d) const { return xyz[3 * i + d]; }
+    std::size_t kdtree_get_point_count() const { return count; }
+    double kdtree_get_pt(std::uint32_t i, std::size_t d) const { return xyz[3 * i + d]; }
     template <class BoundingBox>
     bool kdtree_get_bbox(BoundingBox&) const
     {
@@ -37,16 +35,82 @@ struct TreePoints
 };
 
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<TreeScalar, TreePoints, TreeScalar, std::uint32_t>, TreePoints, 3,
+    nanoflann::L2_Simple_Adaptor<double, TreePoints, double, std::uint32_t>, TreePoints, 3,
     std::uint32_t>;
 
-/// Points per kd-tree leaf: small leaves prune well for k around 16 in 3D; measured on 1M
-/// points, 10 to 20 cost the same within a few percent.
+/// Points per kd-tree leaf (at most). Each leaf is one batch of queries (below): small leaves
+/// give a tight candidate ball, large ones share each tree search among more queries. 6 to 16
+/// cost the same within the noise on a 1M-point scan-like cloud (leaves then hold 8 points on
+/// average).
 constexpr std::size_t leafSize = 12;
+
+/// A leaf whose candidate ball holds more than this many points per query of the leaf is
+/// spread too wide to batch (an outlier next to a dense cluster); its points are then searched
+/// one by one. Scanning a candidate costs about 1/100 of a tree search; on a scan-like cloud
+/// 1% of the leaves exceed 100.
+constexpr std::size_t batchCandidatesPerQuery = 100;
 
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
+}
+
+/// nanoflann result set collecting every point closer than a radius, unsorted, up to a cap,
+/// and counting those closer than an inner radius.
+class BallResultSet
+{
+public:
+    BallResultSet(double squaredRadius, double squaredInnerRadius, std::size_t cap,
+                  std::vector<std::uint32_t>& found)
+        : squaredRadius_(squaredRadius), squaredInnerRadius_(squaredInnerRadius), cap_(cap),
+          found_(found)
+    {
+        found_.clear();
+    }
+    double worstDist() const { return squaredRadius_; }
+    bool full() const { return true; }
+    bool addPoint(double squaredDistance, std::uint32_t index)
+    {
+        found_.push_back(index);
+        inner_ += squaredDistance <= squaredInnerRadius_;
+        overflow_ = found_.size() > cap_;
+        return !overflow_; // stops the search once over the cap
+    }
+    bool overflow() const { return overflow_; }
+    std::size_t inner() const { return inner_; }
+
+private:
+    double squaredRadius_;
+    double squaredInnerRadius_;
+    std::size_t cap_;
+    std::vector<std::uint32_t>& found_;
+    std::size_t inner_ = 0;
+    bool overflow_ = false;
+};
+
+/// A point seen from one query.
+struct Candidate
+{
+    double squaredDistance;
+    int index; // in P
+};
+
+/// Nearest first; the index breaks ties, so the answer does not depend on the order in which
+/// candidates arrive (nor on the thread count).
+bool closer(const Candidate& a, const Candidate& b)
+{
+    return a.squaredDistance < b.squaredDistance ||
+           (a.squaredDistance == b.squaredDistance && a.index < b.index);
+}
+
+void collectLeaves(const KdTree::Node* node, std::vector<const KdTree::Node*>& leaves)
+{
+    if (node->child1 == nullptr && node->child2 == nullptr) {
+        leaves.push_back(node);
+        return;
+    }
+    collectLeaves(node->child1, leaves);
+    collectLeaves(node->child2, leaves);
 }
 
 } // namespace
@@ -70,57 +134,190 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     checkFinite(P, "point cloud");
 
     const Eigen::Index n = P.rows();
-    const Eigen::RowVector3d centre = (P.colwise().minCoeff() + P.colwise().maxCoeff()) / 2;
-    TreePoints points;
-    points.xyz.resize(3 * n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        for (int d = 0; d < 3; ++d) {
-            points.xyz[3 * i + d] = static_cast<TreeScalar>(P(i, d) - centre(d));
-        }
+    TreePoints points{P.data(), static_cast<std::size_t>(n)};
+    KdTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(leafSize));
+
+    // The searches run on a copy Q of the points in the tree's leaf order: the points of a
+    // leaf, and of neighbouring leaves, are then neighbours in memory too. This halves the
+    // time on a cloud stored in scan order and avoids a further factor of two on a cloud
+    // stored in random order. The tree itself stays valid with Q as its data set and the
+    // identity as its index permutation. original[j] is the index in P of Q's row j.
+    const std::vector<std::uint32_t> original = tree.vAcc;
+    PointMatrix Q(n, 3);
+    for (Eigen::Index j = 0; j < n; ++j) {
+        Q.row(j) = P.row(original[j]);
     }
-    const KdTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(leafSize));
+    points.xyz = Q.data();
+    for (std::size_t j = 0; j < tree.vAcc.size(); ++j) {
+        tree.vAcc[j] = static_cast<std::uint32_t>(j);
+    }
+    std::vector<const KdTree::Node*> leaves;
+    collectLeaves(tree.root_node, leaves);
 
     Neighbourhoods result;
     result.indices.resize(n, k);
     result.squaredDistances.resize(n, k);
 
-    // Queries run in the tree's leaf order (vAcc), so consecutive queries of one thread visit
-    // the same few nodes and stay in cache.
-    const std::vector<std::uint32_t>& leafOrder = tree.vAcc;
+    // The points of one leaf are close together, so they share their neighbours. If the
+    // ball of radius r0 around the leaf's most central point q0 holds k + 1 points, those lie
+    // within r0 + |q - q0| of any q of the leaf, so the k nearest others of q lie in the ball
+    // around q0 of radius r0 + 2 max|q - q0|. One radius search fetches that ball and each
+    // query of the leaf scans it exactly: one tree descent per leaf instead of one per point.
+    // r0 is guessed from the previous leaf of the thread (leaves come in spatial order) and
+    // checked by counting the points within it; a kNN search from q0 gives it otherwise.
+    const std::size_t wanted = static_cast<std::size_t>(k) + 1;
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        std::vector<std::uint32_t> found(k + 1);
-        std::vector<TreeScalar> foundDistances(k + 1);
-#pragma omp for schedule(dynamic, 1024)
-        for (Eigen::Index position = 0; position < n; ++position) {
-            const Eigen::Index i = leafOrder[position];
-            nanoflann::KNNResultSet<TreeScalar, std::uint32_t, std::uint32_t> resultSet(k + 1);
-            resultSet.init(found.data(), foundDistances.data());
-            tree.findNeighbors(resultSet, &points.xyz[3 * i], nanoflann::SearchParams(0, 0.0f));
+        std::vector<std::uint32_t> found(wanted);
+        std::vector<double> foundDistances(wanted);
+        std::vector<std::uint32_t> ball;
+        std::vector<float> cx, cy, cz, cd;
+        std::vector<std::uint32_t> passed;
+        std::vector<Candidate> near(wanted);
+        double radiusGuess = 0.0;
+        // The k nearest of point i are the first k of `near`, sorted.
+        const auto store = [&](std::uint32_t i) {
+            for (int c = 0; c < k; ++c) {
+                result.indices(i, c) = near[c].index;
+                result.squaredDistances(i, c) = near[c].squaredDistance;
+            }
+        };
+#pragma omp for schedule(dynamic, 64)
+        for (std::size_t leaf = 0; leaf < leaves.size(); ++leaf) {
+            const auto& range = leaves[leaf]->node_type.lr;
+            const Eigen::Index first = static_cast<Eigen::Index>(range.left);
+            const Eigen::Index last = static_cast<Eigen::Index>(range.right);
+            const std::size_t cap = batchCandidatesPerQuery * static_cast<std::size_t>(last - first);
 
-            // The k + 1 nearest include the point itself unless k + 1 points coincide with it
-            // and the tree reported others: drop its own index, else the farthest.
-            int* indices = result.indices.row(i).data();
-            double* distances = result.squaredDistances.row(i).data();
-            int count = 0;
-            for (int j = 0; j <= k && count < k; ++j) {
-                if (found[j] == static_cast<std::uint32_t>(i)) {
-                    continue;
+            const Eigen::RowVector3d centre =
+                Q.middleRows(first, last - first).colwise().sum() / double(last - first);
+            Eigen::Index q0 = first;
+            double best = std::numeric_limits<double>::infinity();
+            for (Eigen::Index j = first; j < last; ++j) {
+                const double d = (Q.row(j) - centre).squaredNorm();
+                if (d < best) {
+                    best = d;
+                    q0 = j;
                 }
-                const int q = static_cast<int>(found[j]);
-                const double d2 = (P.row(q) - P.row(i)).squaredNorm();
-                // Insertion by the exact double distance (ties by index, so the order does not
-                // depend on the float rounding or the thread that ran the query).
-                int slot = count;
-                while (slot > 0 && (distances[slot - 1] > d2 ||
-                                    (distances[slot - 1] == d2 && indices[slot - 1] > q))) {
-                    distances[slot] = distances[slot - 1];
-                    indices[slot] = indices[slot - 1];
-                    --slot;
+            }
+            double spread = 0.0;
+            for (Eigen::Index j = first; j < last; ++j) {
+                spread = std::max(spread, (Q.row(j) - Q.row(q0)).squaredNorm());
+            }
+            spread = std::sqrt(spread);
+
+            // A relative margin for rounding; the smallest positive bound still admits the
+            // zero distances of a leaf of coincident points.
+            const auto squared = [](double r) {
+                return std::max(r * r * (1.0 + 1e-9), std::numeric_limits<double>::denorm_min());
+            };
+            double r0 = radiusGuess;
+            bool batched = false;
+            bool overflow = false;
+            if (r0 > 0.0) {
+                BallResultSet inBall(squared(r0 + 2.0 * spread), squared(r0), cap, ball);
+                tree.findNeighbors(inBall, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
+                overflow = inBall.overflow();
+                batched = !overflow && inBall.inner() >= wanted;
+                if (batched) {
+                    // Aim at about 1.3 (k + 1) points within the guess: the area, and so the
+                    // count, grows with the square of the radius on a surface.
+                    const double ratio = 1.3 * double(wanted) / double(inBall.inner());
+                    radiusGuess = r0 * std::sqrt(std::clamp(ratio, 0.25, 4.0));
                 }
-                distances[slot] = d2;
-                indices[slot] = q;
-                ++count;
+            }
+            if (!batched && !overflow) {
+                nanoflann::KNNResultSet<double, std::uint32_t, std::uint32_t> nearest(wanted);
+                nearest.init(found.data(), foundDistances.data());
+                tree.findNeighbors(nearest, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
+                r0 = std::sqrt(foundDistances[k]);
+                radiusGuess = r0 * std::sqrt(1.3);
+                BallResultSet inBall(squared(r0 + 2.0 * spread), squared(r0), cap, ball);
+                tree.findNeighbors(inBall, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
+                overflow = inBall.overflow();
+            }
+
+            if (overflow) {
+                // Too spread for a batch: an exact kNN search per point.
+                for (Eigen::Index j = first; j < last; ++j) {
+                    nanoflann::KNNResultSet<double, std::uint32_t, std::uint32_t> own(wanted);
+                    own.init(found.data(), foundDistances.data());
+                    tree.findNeighbors(own, Q.row(j).data(), nanoflann::SearchParams(0, 0.0f));
+                    // The point itself is dropped by index (its exact duplicates stay); if
+                    // k + 1 others tie at distance 0 it may be absent, then the k + 1 are
+                    // sorted and the farthest dropped.
+                    std::size_t count = 0;
+                    for (std::size_t c = 0; c < wanted; ++c) {
+                        if (found[c] != static_cast<std::uint32_t>(j)) {
+                            near[count++] = {(Q.row(found[c]) - Q.row(j)).squaredNorm(),
+                                             static_cast<int>(original[found[c]])};
+                        }
+                    }
+                    std::sort(near.begin(), near.begin() + count, closer);
+                    store(original[j]);
+                }
+                continue;
+            }
+
+            // Candidates relative to q0 in float for a vectorised first cut; every candidate
+            // that passes it is then measured exactly in double.
+            const std::size_t m = ball.size();
+            cx.resize(m);
+            cy.resize(m);
+            cz.resize(m);
+            cd.resize(m);
+            passed.resize(m);
+            near.resize(std::max(m, wanted));
+            for (std::size_t c = 0; c < m; ++c) {
+                cx[c] = static_cast<float>(Q(ball[c], 0) - Q(q0, 0));
+                cy[c] = static_cast<float>(Q(ball[c], 1) - Q(q0, 1));
+                cz[c] = static_cast<float>(Q(ball[c], 2) - Q(q0, 2));
+            }
+            for (Eigen::Index j = first; j < last; ++j) {
+                const float x = static_cast<float>(Q(j, 0) - Q(q0, 0));
+                const float y = static_cast<float>(Q(j, 1) - Q(q0, 1));
+                const float z = static_cast<float>(Q(j, 2) - Q(q0, 2));
+                for (std::size_t c = 0; c < m; ++c) { // vectorised
+                    const float dx = cx[c] - x, dy = cy[c] - y, dz = cz[c] - z;
+                    cd[c] = dx * dx + dy * dy + dz * dz;
+                }
+                const auto countWithin = [&](float cut) {
+                    std::size_t count = 0;
+                    for (std::size_t c = 0; c < m; ++c) { // vectorised
+                        count += cd[c] <= cut;
+                    }
+                    return count;
+                };
+                // No neighbour of q lies farther than r0 + |q - q0|: about 3 (k + 1)
+                // candidates on a surface. The float cut is narrowed towards 1.25 (k + 1) (the
+                // count grows like the squared distance on a surface), kept only if k + 1
+                // points, q included, stay inside it. The cut keeps a relative margin of 1e-4:
+                // a true neighbour and q lie within twice the bound of q0, so float rounding of
+                // their offsets is 2^-24 of the bound, and narrowing shrinks the cut by at most
+                // the candidate cap over k + 1, which keeps that rounding below 1e-5 of it.
+                const double bound = r0 + (Q.row(j) - Q.row(q0)).norm();
+                const double squaredBound = bound * bound * (1.0 + 1e-9);
+                float cut = static_cast<float>(squaredBound * (1.0 + 1e-4));
+                const float narrower = cut * (1.25f * float(wanted) / float(countWithin(cut)));
+                if (countWithin(narrower * (1.0f - 1e-4f)) >= wanted) {
+                    cut = narrower;
+                }
+                std::size_t passing = 0;
+                for (std::size_t c = 0; c < m; ++c) { // branch-free compaction
+                    passed[passing] = static_cast<std::uint32_t>(c);
+                    passing += cd[c] <= cut;
+                }
+                std::size_t count = 0;
+                for (std::size_t c = 0; c < passing; ++c) {
+                    const std::uint32_t candidate = ball[passed[c]];
+                    const double d2 = (Q.row(candidate) - Q.row(j)).squaredNorm();
+                    if (d2 <= squaredBound && candidate != static_cast<std::uint32_t>(j)) {
+                        near[count++] = {d2, static_cast<int>(original[candidate])};
+                    }
+                }
+                // count >= k: the k + 1 points within r0 of q0, but q, are within the bound.
+                std::sort(near.begin(), near.begin() + count, closer);
+                store(original[j]);
             }
         }
     }

@@ -72,6 +72,27 @@ TEST(Neighbours, MatchBruteForceOnRandomCloud)
     }
 }
 
+TEST(Neighbours, MatchBruteForceAcrossScales)
+{
+    // Tight clusters (extent 1e-7 and 1e-4) inside a cloud of extent 1e3: the search batches
+    // neighbouring points and cuts candidates in float first, which must not lose a neighbour
+    // when a leaf mixes very different scales.
+    const PointMatrix spread = randomCloud(400, 8) * 1e3;
+    const PointMatrix tight = randomCloud(40, 9) * 1e-7;
+    const PointMatrix small = randomCloud(40, 10) * 1e-4;
+    PointMatrix P(spread.rows() + tight.rows() + small.rows(), 3);
+    P << spread, tight.rowwise() + Eigen::RowVector3d(5.0, 5.0, 5.0),
+        small.rowwise() + Eigen::RowVector3d(5.0, 5.0, 5.0);
+    const int k = 10;
+    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
+    for (int i = 0; i < P.rows(); ++i) {
+        const std::vector<int> expected = bruteForce(P, i, k);
+        for (int j = 0; j < k; ++j) {
+            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
+        }
+    }
+}
+
 TEST(Neighbours, SameAnswerForAnyThreadCount)
 {
     const PointMatrix P = randomCloud(3000, 11);
