@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +37,14 @@ constexpr double straightTurn = 1e-9;
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
+}
+
+/// A cheap monotone stand-in for atan2(y, x): increases with the angle over (-pi, pi], in
+/// [-2, 2].
+double pseudoAngle(double x, double y)
+{
+    const double p = y / (std::abs(x) + std::abs(y)); // -1 to 1 over the half-plane x >= 0
+    return x >= 0.0 ? p : (y >= 0.0 ? 2.0 - p : -2.0 - p);
 }
 
 /// True when o -> a -> b turns strictly left.
@@ -99,7 +108,6 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
     {
         std::vector<Candidate> candidates;
         std::vector<Candidate> hull;
-        std::vector<std::pair<double, int>> ring;
 #pragma omp for schedule(static, 4096)
         for (Eigen::Index i = 0; i < n; ++i) {
             const Eigen::Vector3d normal = normals.row(i).transpose();
@@ -129,17 +137,32 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
             }
             convexHull(candidates, hull);
 
-            ring.clear();
-            for (const Candidate& c : hull) {
-                if (c.index >= 0) {
-                    ring.emplace_back(std::atan2(c.y, c.x), c.index);
+            // The hull runs counter-clockwise, so its vertices are already in angular order
+            // around the point, which lies inside or on it. A border point is a vertex of its
+            // own hull: the ring then starts just after it and fans across the inside. Else it
+            // starts at the direction closest to -u (angle -pi), as atan2 would sort it.
+            const std::size_t size = hull.size();
+            std::size_t start = 0;
+            double smallest = std::numeric_limits<double>::infinity();
+            for (std::size_t h = 0; h < size; ++h) {
+                if (hull[h].index < 0) {
+                    start = h + 1;
+                    break;
+                }
+                const double angle = pseudoAngle(hull[h].x, hull[h].y);
+                if (angle < smallest) {
+                    smallest = angle;
+                    start = h;
                 }
             }
-            std::sort(ring.begin(), ring.end());
-            for (std::size_t r = 0; r < ring.size(); ++r) {
-                slots(i, static_cast<Eigen::Index>(r)) = ring[r].second;
+            int count = 0;
+            for (std::size_t h = 0; h < size; ++h) {
+                const Candidate& c = hull[(start + h) % size];
+                if (c.index >= 0) {
+                    slots(i, count++) = c.index;
+                }
             }
-            counts[i] = static_cast<int>(ring.size());
+            counts[i] = count;
         }
     }
 
@@ -150,9 +173,11 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
         result.offsets[i + 1] = result.offsets[i] + counts[i];
     }
     result.indices.resize(result.offsets[n]);
+#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
-        std::copy(slots.row(i).data(), slots.row(i).data() + counts[i],
-                  result.indices.begin() + result.offsets[i]);
+        for (int r = 0; r < counts[i]; ++r) {
+            result.indices[result.offsets[i] + r] = slots(i, r);
+        }
     }
     return result;
 }
