@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -87,6 +89,7 @@ TEST_F(CloudIO, XyzRoundTripIsExact)
         1e6 + 0.001, -2e6, 5e5;
     writeXyz(path("cloud.xyz"), P);
     EXPECT_EQ(readCloud(path("cloud.xyz")), P);
+    EXPECT_THROW(writeXyz(path("no-such-folder/cloud.xyz"), P), std::invalid_argument);
 }
 
 TEST_F(CloudIO, TextWithCommasExtraColumnsCommentsAndCrlf)
