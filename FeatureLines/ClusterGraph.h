@@ -66,8 +66,9 @@ struct ClusterGraphOptions
     /// (reconnection), so lines close or end on other lines. It must exceed
     /// minBranchLength + maxEdgeLength: the spanning tree breaks every cycle of the feature
     /// network somewhere, and branch pruning may shorten the broken end by up to
-    /// minBranchLength.
-    double reconnectRadius = 10.0;
+    /// minBranchLength. 12 also bridges the gaps of a few spacings that noise leaves in the
+    /// candidates along a shallow crease.
+    double reconnectRadius = 12.0;
     /// Degrees: "ahead" is within this angle of the line's direction at its end.
     double reconnectAngle = 50.0;
     /// A reconnection is refused when it would close a cycle shorter than this many times the

@@ -35,14 +35,19 @@ struct FirstOrderSegmentationOptions
     /// Spacings. A point may stop the growing only when its surface variation, less the
     /// cloud's median as the noise floor, exceeds that of a spherical blend of this radius,
     /// R^2 / (24 r^2) (a cylindrical fillet gives R^2 / (32 r^2), less). Fillets and corner
-    /// blends of this radius or more stay smooth; a clean crease reaches 0.14 tan^2(a/2) at
-    /// its centre, so creases turning the normal by more than ~40 degrees stop the growing.
-    double minFilletRadius = 5.0;
+    /// blends of this radius or more stay smooth, down to ~5 spacings on clean clouds; a clean
+    /// crease reaches 0.14 tan^2(a/2) at its centre, so creases turning the normal by more than
+    /// ~35 degrees stop the growing (the 45 degree edges of a chamfer; the 35 degree edges
+    /// where three chamfers meet only in part). 6 is the smallest fillet the tests and the
+    /// benchmark ask to keep smooth; 5 loses a quarter of the chamfer edges.
+    double minFilletRadius = 6.0;
     /// ... and exceeds this many standard deviations of the noise on the surface variation
     /// (estimated from the cloud's median absolute deviation). On a clean cloud this is
-    /// nothing; with noise of 0.3 spacing along the normal it is ~0.02, which a 90 degree
-    /// crease (0.08) passes and a 45 degree one (0.02) only partly.
-    double noiseMargin = 2.0;
+    /// nothing; with noise of 0.3 spacing along the normal the deviation is ~0.01, about the
+    /// fillet limit above, while a 90 degree crease reaches 0.08 and a 45 degree one 0.02.
+    /// At 2, noisy 45 degree edges are mostly lost; below 1, noisy fillets of 7 spacings start
+    /// to leave candidate chains.
+    double noiseMargin = 1.0;
     /// A cluster is large (a surface patch) when at least this many of its points have all
     /// their k neighbours inside it; otherwise it is small and its points are candidates.
     /// Counting whole neighbourhoods rather than points is the design's reading of "small":
