@@ -18,6 +18,7 @@
 #include <Mod/Points/App/Points.h>
 #include <Mod/Points/App/PointsFeature.h>
 #include <Mod/Points/App/PointsPy.h>
+#include <Standard_Failure.hxx>
 
 #include <cmath>
 #include <map>
@@ -64,7 +65,7 @@ Base::Vector3d vectorOf(const Py::Object& item)
     if (PyObject_TypeCheck(item.ptr(), &Base::VectorPy::Type)) {
         return *static_cast<Base::VectorPy*>(item.ptr())->getVectorPtr();
     }
-    if (item.isSequence()) {
+    if (item.isSequence() && !PyUnicode_Check(item.ptr())) {
         Py::Sequence xyz(item);
         if (xyz.size() == 3) {
             return Base::Vector3d(double(Py::Float(xyz[0])), double(Py::Float(xyz[1])),
@@ -195,15 +196,10 @@ ParameterValues parametersOf(const Py::Dict& keywords, const std::vector<std::st
             std::map<int, std::vector<double>> byRegion;
             for (Py::List::size_type r = 0; r < regions.size(); ++r) {
                 const Py::Object key = regions[r];
-                long region = -1;
-                if (PyLong_Check(key.ptr())) {
-                    region = Py::Long(key).as_long();
-                } else {
-                    region = parseRegionThresholds({{Py::String(key).as_std_string(), ""}})
-                                 .begin()
-                                 ->first;
-                }
-                byRegion[int(region)] = numbersOf(map.getItem(key), name);
+                const int region = PyLong_Check(key.ptr())
+                                       ? static_cast<int>(Py::Long(key).as_long())
+                                       : parseRegion(Py::String(key).as_std_string());
+                byRegion[region] = numbersOf(map.getItem(key), name);
             }
             values.regionThresholds = byRegion;
         } else if (const Parameter* p = findParameter(name)) {
@@ -296,7 +292,8 @@ public:
             "One Points feature per patch of a recomputed extraction (the points of one smooth\n"
             "region between the same two curvature thresholds), in a new group, so a patch can\n"
             "be handed to surface fitting. Patches of fewer than min_points points are left out\n"
-            "(0: twice NeighbourCount, the fewest a surface fit can lean on).");
+            "(0: twice NeighbourCount, the fewest a surface fit can lean on); no group is made\n"
+            "when no patch is left.");
         add_varargs_method(
             "parameters", &Module::listParameters,
             "parameters() -> list of dict\n"
@@ -322,7 +319,40 @@ public:
         initialize("Closed feature lines (sharp edges, fillet borders) from point clouds.");
     }
 
+    // PyCXX passes only Python exceptions on: any other exception leaving a function would end
+    // FreeCAD. Every function's call goes through here, and the core's exceptions become
+    // Python's (bad input: ValueError; cancelled or failed: RuntimeError).
+    Py::Object invoke_method_varargs(void* method, const Py::Tuple& args) override
+    {
+        return translated(
+            [&] { return Py::ExtensionModule<Module>::invoke_method_varargs(method, args); });
+    }
+    Py::Object invoke_method_keyword(void* method, const Py::Tuple& args,
+                                     const Py::Dict& keywords) override
+    {
+        return translated([&] {
+            return Py::ExtensionModule<Module>::invoke_method_keyword(method, args, keywords);
+        });
+    }
+
 private:
+    template <class Call> static Py::Object translated(Call call)
+    {
+        try {
+            return call();
+        } catch (const Py::Exception&) {
+            throw;
+        } catch (const std::invalid_argument& e) {
+            throw Py::ValueError(e.what());
+        } catch (const std::exception& e) {
+            throw Py::RuntimeError(e.what());
+        } catch (const Base::Exception& e) {
+            throw Py::RuntimeError(e.what());
+        } catch (const Standard_Failure& e) {
+            throw Py::RuntimeError(std::string("OpenCASCADE: ") + e.GetMessageString());
+        }
+    }
+
     Py::Object readCloud(const Py::Tuple& args)
     {
         char* path = nullptr;
@@ -331,12 +361,7 @@ private:
         }
         std::string file(path);
         PyMem_Free(path);
-        PointMatrix P;
-        try {
-            P = featurelines::readCloud(file);
-        } catch (const std::invalid_argument& e) {
-            throw Py::ValueError(e.what());
-        }
+        const PointMatrix P = featurelines::readCloud(file);
         auto* kernel =
             new Points::PointKernel(static_cast<Points::PointKernel::size_type>(P.rows()));
         for (Eigen::Index i = 0; i < P.rows(); ++i) {
@@ -351,22 +376,11 @@ private:
             throw Py::TypeError("extract(points, **parameters) takes one positional argument");
         }
         const Cloud cloud = cloudOf(args[0].ptr());
-        featurelines::ExtractionOptions options;
-        try {
-            options = toExtractionOptions(parametersOf(keywords));
-        } catch (const std::invalid_argument& e) {
-            throw Py::ValueError(e.what());
-        }
+        featurelines::ExtractionOptions options = toExtractionOptions(parametersOf(keywords));
         ExtractionProgress progress("Feature lines");
         options.progress = progress.callback();
-        featurelines::ExtractionResult r;
-        try {
-            r = extractCached(cloud.points, hashCloud(cloud.points), options);
-        } catch (const featurelines::ExtractionCancelled& e) {
-            throw Py::RuntimeError(e.what());
-        } catch (const std::invalid_argument& e) {
-            throw Py::ValueError(e.what());
-        }
+        const featurelines::ExtractionResult r =
+            extractCached(cloud.points, hashCloud(cloud.points), options);
         const LineWires w = makeWires(r, cloud.toWorld);
         Py::Dict out;
         out["sharp"] = wireList(w.sharp);
@@ -435,34 +449,26 @@ private:
                    (PySequence_Size(source) > 0 &&
                     !PyNumber_Check(Py::Sequence(source)[0].ptr()))) {
             const Cloud cloud = cloudOf(source);
-            try {
-                const auto g = geometryCached(cloud.points, hashCloud(cloud.points), {});
-                const Eigen::VectorXd h =
-                    featurelines::meanCurvature(g->points, g->normals.normals, g->neighbours);
-                values.assign(h.data(), h.data() + h.size());
-            } catch (const std::invalid_argument& e) {
-                throw Py::ValueError(e.what());
-            }
+            const auto g = geometryCached(cloud.points, hashCloud(cloud.points), {});
+            const Eigen::VectorXd h =
+                featurelines::meanCurvature(g->points, g->normals.normals, g->neighbours);
+            values.assign(h.data(), h.data() + h.size());
         } else {
             values = numbersOf(Py::Object(source), "values");
         }
         featurelines::ThresholdOptions options;
         options.bins = bins;
         options.outlierPercent = outliers;
+        if (below != Py_None && above != Py_None) {
+            throw Py::ValueError("give below or above, not both");
+        }
         featurelines::ThresholdResult t;
-        try {
-            if (below != Py_None && above != Py_None) {
-                throw std::invalid_argument("give below or above, not both");
-            }
-            if (below != Py_None) {
-                t = featurelines::findLowerThreshold(values, double(Py::Float(below)), options);
-            } else if (above != Py_None) {
-                t = featurelines::findHigherThreshold(values, double(Py::Float(above)), options);
-            } else {
-                t = featurelines::findThreshold(values, options);
-            }
-        } catch (const std::invalid_argument& e) {
-            throw Py::ValueError(e.what());
+        if (below != Py_None) {
+            t = featurelines::findLowerThreshold(values, double(Py::Float(below)), options);
+        } else if (above != Py_None) {
+            t = featurelines::findHigherThreshold(values, double(Py::Float(above)), options);
+        } else {
+            t = featurelines::findThreshold(values, options);
         }
         Py::Dict out;
         out["threshold"] = Py::Float(t.threshold);
@@ -501,11 +507,7 @@ private:
             name = Py::String(keywords.getItem("name")).as_std_string();
         }
         const ParameterValues values = parametersOf(keywords, {"name"});
-        try {
-            toExtractionOptions(values);
-        } catch (const std::invalid_argument& e) {
-            throw Py::ValueError(e.what());
-        }
+        toExtractionOptions(values); // refuses bad values before the object is added
         auto* obj = static_cast<Extraction*>(
             source->getDocument()->addObject("FeatureLines::Extraction", name.c_str()));
         obj->Source.setValue(source);
@@ -544,13 +546,16 @@ private:
             }
         }
         App::Document* doc = e->getDocument();
-        auto* group = static_cast<App::DocumentObjectGroup*>(
-            doc->addObject("App::DocumentObjectGroup", "Patches"));
-        group->Label.setValue(std::string(e->Label.getValue()) + " patches");
+        App::DocumentObjectGroup* group = nullptr;
         Py::List created;
         for (const auto& [id, points] : members) {
             if (static_cast<int>(points.size()) < minPoints) {
                 continue;
+            }
+            if (!group) {
+                group = static_cast<App::DocumentObjectGroup*>(
+                    doc->addObject("App::DocumentObjectGroup", "Patches"));
+                group->Label.setValue(std::string(e->Label.getValue()) + " patches");
             }
             Points::PointKernel kernel;
             kernel.reserve(points.size());

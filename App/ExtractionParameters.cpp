@@ -365,23 +365,28 @@ std::string formatThresholds(const std::vector<double>& thresholds)
     return text;
 }
 
+int parseRegion(const std::string& text)
+{
+    size_t used = 0;
+    int region = -1;
+    try {
+        region = std::stoi(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size()) {
+        throw std::invalid_argument(std::string(regionThresholdsName) + ": '" + text +
+                                    "' is not a region number");
+    }
+    return region;
+}
+
 std::map<int, std::vector<double>>
 parseRegionThresholds(const std::map<std::string, std::string>& text)
 {
     std::map<int, std::vector<double>> out;
     for (const auto& [key, value] : text) {
-        size_t used = 0;
-        int region = -1;
-        try {
-            region = std::stoi(key, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != key.size()) {
-            throw std::invalid_argument(std::string(regionThresholdsName) + ": '" + key +
-                                        "' is not a region number");
-        }
-        out[region] =
+        out[parseRegion(key)] =
             parseThresholds(value, std::string(regionThresholdsName) + " of region " + key);
     }
     return out;

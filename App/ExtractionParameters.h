@@ -89,6 +89,9 @@ std::vector<double> parseThresholds(const std::string& text, const std::string& 
 /// The inverse of parseThresholds, full precision.
 std::string formatThresholds(const std::vector<double>& thresholds);
 
+/// A region number written as text ("0", "12"). Throws std::invalid_argument otherwise.
+int parseRegion(const std::string& text);
+
 /// RegionThresholds as stored in a property map: "region number" -> "t1 t2 ...".
 std::map<int, std::vector<double>>
 parseRegionThresholds(const std::map<std::string, std::string>& text);

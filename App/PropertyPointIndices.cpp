@@ -7,6 +7,7 @@
 #include <Base/Stream.h>
 #include <Base/Writer.h>
 
+#include <algorithm>
 #include <cstdint>
 
 using namespace FeatureLines;

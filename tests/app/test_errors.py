@@ -210,6 +210,13 @@ class PythonErrorTest(unittest.TestCase):
             FeatureLines.extract(cube, ThresholdMode="Explicit", Thresholds=[-1])
         with self.assertRaisesRegex(TypeError, "must be a number"):
             FeatureLines.extract(cube, BandWidth="wide")
+        # Text the core's parsers refuse arrives as a Python error, not as a crash.
+        with self.assertRaisesRegex(ValueError, "'abc' is not a number"):
+            FeatureLines.extract(cube, ThresholdMode="Explicit", Thresholds="0.1 abc")
+        with self.assertRaisesRegex(ValueError, "'x' is not a region number"):
+            FeatureLines.extract(cube, ThresholdMode="Explicit", RegionThresholds={"x": [0.1]})
+        with self.assertRaisesRegex(TypeError, "a point must be"):
+            FeatureLines.histogram(["low", "high"])
 
     def test_bad_histograms(self):
         with self.assertRaisesRegex(ValueError, "all values are equal"):
