@@ -81,7 +81,8 @@ PointMatrix readText(const std::string& path)
             ++p;
         }
         // Blank lines, comments, and header lines such as FreeCAD's "# ..." are skipped.
-        if (p == lineEnd || *p == '#' || *p == '%' || (*p == '/' && p + 1 < lineEnd && p[1] == '/')) {
+        if (p == lineEnd || *p == '#' || *p == '%' ||
+            (*p == '/' && p + 1 < lineEnd && p[1] == '/')) {
             continue;
         }
         const std::string where = path + ", line " + std::to_string(lineNumber) + ": ";
@@ -137,14 +138,11 @@ PointMatrix readCloud(const std::string& path)
     }
     const std::string extension = lowercaseExtension(path);
     PointMatrix P;
-    if (extension == ".xyz" || extension == ".txt" || extension == ".asc" ||
-        extension == ".csv") {
+    if (extension == ".xyz" || extension == ".txt" || extension == ".asc" || extension == ".csv") {
         P = readText(path);
-    }
-    else if (extension == ".ply" || extension == ".pcd") {
+    } else if (extension == ".ply" || extension == ".pcd") {
         P = detail::readPclCloud(path, extension == ".ply");
-    }
-    else {
+    } else {
         throw std::invalid_argument(
             path + ": unknown point cloud format " +
             (extension.empty() ? std::string("(no extension)") : "'" + extension + "'") +

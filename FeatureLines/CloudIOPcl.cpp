@@ -36,8 +36,7 @@ private:
     pcl::console::VERBOSITY_LEVEL previous_;
 };
 
-template <class T>
-double readAs(const std::uint8_t* data)
+template <class T> double readAs(const std::uint8_t* data)
 {
     T value;
     std::memcpy(&value, data, sizeof(T));
@@ -48,44 +47,44 @@ double readAs(const std::uint8_t* data)
 double readScalar(const std::uint8_t* data, std::uint8_t datatype)
 {
     switch (datatype) {
-        case pcl::PCLPointField::INT8:
-            return readAs<std::int8_t>(data);
-        case pcl::PCLPointField::UINT8:
-            return readAs<std::uint8_t>(data);
-        case pcl::PCLPointField::INT16:
-            return readAs<std::int16_t>(data);
-        case pcl::PCLPointField::UINT16:
-            return readAs<std::uint16_t>(data);
-        case pcl::PCLPointField::INT32:
-            return readAs<std::int32_t>(data);
-        case pcl::PCLPointField::UINT32:
-            return readAs<std::uint32_t>(data);
-        case pcl::PCLPointField::FLOAT32:
-            return readAs<float>(data);
-        case pcl::PCLPointField::FLOAT64:
-            return readAs<double>(data);
-        default:
-            return 0.0; // rejected before reading
+    case pcl::PCLPointField::INT8:
+        return readAs<std::int8_t>(data);
+    case pcl::PCLPointField::UINT8:
+        return readAs<std::uint8_t>(data);
+    case pcl::PCLPointField::INT16:
+        return readAs<std::int16_t>(data);
+    case pcl::PCLPointField::UINT16:
+        return readAs<std::uint16_t>(data);
+    case pcl::PCLPointField::INT32:
+        return readAs<std::int32_t>(data);
+    case pcl::PCLPointField::UINT32:
+        return readAs<std::uint32_t>(data);
+    case pcl::PCLPointField::FLOAT32:
+        return readAs<float>(data);
+    case pcl::PCLPointField::FLOAT64:
+        return readAs<double>(data);
+    default:
+        return 0.0; // rejected before reading
     }
 }
 
 std::size_t scalarSize(std::uint8_t datatype)
 {
     switch (datatype) {
-        case pcl::PCLPointField::INT8:
-        case pcl::PCLPointField::UINT8:
-            return 1;
-        case pcl::PCLPointField::INT16:
-        case pcl::PCLPointField::UINT16:
-            return 2;
-        case pcl::PCLPointField::INT32:
-        case pcl::PCLPointField::UINT32:
-        case pcl::PCLPointField::FLOAT32:
-            return 4;
-        case pcl::PCLPointField::FLOAT64:
-            return 8;
-        default:
-            return 0;
+    case pcl::PCLPointField::INT8:
+    case pcl::PCLPointField::UINT8:
+        return 1;
+    case pcl::PCLPointField::INT16:
+    case pcl::PCLPointField::UINT16:
+        return 2;
+    case pcl::PCLPointField::INT32:
+    case pcl::PCLPointField::UINT32:
+    case pcl::PCLPointField::FLOAT32:
+        return 4;
+    case pcl::PCLPointField::FLOAT64:
+        return 8;
+    default:
+        return 0;
     }
 }
 
@@ -131,8 +130,7 @@ PointMatrix readPclCloud(const std::string& path, bool ply)
         const QuietPcl quiet;
         try {
             status = ply ? pcl::io::loadPLYFile(path, cloud) : pcl::io::loadPCDFile(path, cloud);
-        }
-        catch (const std::exception&) {
+        } catch (const std::exception&) {
             status = -1;
         }
     }
@@ -148,8 +146,8 @@ PointMatrix readPclCloud(const std::string& path, bool ply)
     for (int d = 0; d < 3; ++d) {
         const int index = pcl::getFieldIndex(cloud, names[d]);
         if (index < 0) {
-            throw std::invalid_argument(path + ": the " + std::string(format) +
-                                        " file has no '" + names[d] + "' coordinate");
+            throw std::invalid_argument(path + ": the " + std::string(format) + " file has no '" +
+                                        names[d] + "' coordinate");
         }
         fields[d] = &cloud.fields[index];
         const std::size_t size = scalarSize(fields[d]->datatype);

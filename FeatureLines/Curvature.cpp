@@ -21,7 +21,8 @@ constexpr int minimumNeighbours = 5;
 
 /// The fit is degenerate (neighbours collinear, or all in too few directions to fix a
 /// quadric) when a pivot of the normal equations' Cholesky factor is this small relative to
-/// their largest diagonal entry. The coordinates are scaled to the unit disc, so this is a pure rounding level.
+/// their largest diagonal entry. The coordinates are scaled to the unit disc, so this is a pure
+/// rounding level.
 constexpr double degeneratePivot = 1e-12;
 
 int threadCount(int requested)
@@ -44,8 +45,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     if (k < minimumNeighbours || k > N.k()) {
         throw std::invalid_argument(
             "mean curvature: the quadric fit needs between " + std::to_string(minimumNeighbours) +
-            " and the " + std::to_string(N.k()) + " neighbours computed, not " +
-            std::to_string(k));
+            " and the " + std::to_string(N.k()) + " neighbours computed, not " + std::to_string(k));
     }
 
     const Eigen::Index n = P.rows();

@@ -27,11 +27,7 @@ struct TreePoints
 
     std::size_t kdtree_get_point_count() const { return count; }
     double kdtree_get_pt(std::uint32_t i, std::size_t d) const { return xyz[3 * i + d]; }
-    template <class BoundingBox>
-    bool kdtree_get_bbox(BoundingBox&) const
-    {
-        return false;
-    }
+    template <class BoundingBox> bool kdtree_get_bbox(BoundingBox&) const { return false; }
 };
 
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
@@ -144,6 +140,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     // identity as its index permutation. original[j] is the index in P of Q's row j.
     const std::vector<std::uint32_t> original = tree.vAcc;
     PointMatrix Q(n, 3);
+#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index j = 0; j < n; ++j) {
         Q.row(j) = P.row(original[j]);
     }
@@ -187,7 +184,8 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
             const auto& range = leaves[leaf]->node_type.lr;
             const Eigen::Index first = static_cast<Eigen::Index>(range.left);
             const Eigen::Index last = static_cast<Eigen::Index>(range.right);
-            const std::size_t cap = batchCandidatesPerQuery * static_cast<std::size_t>(last - first);
+            const std::size_t cap =
+                batchCandidatesPerQuery * static_cast<std::size_t>(last - first);
 
             const Eigen::RowVector3d centre =
                 Q.middleRows(first, last - first).colwise().sum() / double(last - first);

@@ -22,9 +22,9 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
                           const NormalOptions& options)
 {
     if (N.size() != P.rows()) {
-        throw std::invalid_argument("normals: the neighbourhoods were computed for another cloud (" +
-                                    std::to_string(N.size()) + " rows for " +
-                                    std::to_string(P.rows()) + " points)");
+        throw std::invalid_argument(
+            "normals: the neighbourhoods were computed for another cloud (" +
+            std::to_string(N.size()) + " rows for " + std::to_string(P.rows()) + " points)");
     }
     const int k = options.k == 0 ? N.k() : options.k;
     if (k < 2 || k > N.k()) {

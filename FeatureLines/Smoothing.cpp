@@ -13,7 +13,8 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
 {
     if (N.size() != P.rows()) {
         throw std::invalid_argument("smoothing: the neighbourhoods were computed for another "
-                                    "cloud (" + std::to_string(N.size()) + " rows for " +
+                                    "cloud (" +
+                                    std::to_string(N.size()) + " rows for " +
                                     std::to_string(P.rows()) + " points)");
     }
     if (options.iterations < 0 || !std::isfinite(options.lambda) || !std::isfinite(options.mu)) {

@@ -46,8 +46,7 @@ protected:
     {
         try {
             readCloud(file);
-        }
-        catch (const std::invalid_argument& e) {
+        } catch (const std::invalid_argument& e) {
             return e.what();
         }
         return "";
@@ -61,14 +60,13 @@ private:
 PointMatrix threePoints()
 {
     PointMatrix P(3, 3);
-    P << 1.5, -2.25, 3.0,   //
-        0.0, 1e-3, -7.5,    //
+    P << 1.5, -2.25, 3.0, //
+        0.0, 1e-3, -7.5,  //
         100.25, 0.5, 2.0;
     return P;
 }
 
-template <class T>
-void putBytes(std::string& out, T value, bool bigEndian)
+template <class T> void putBytes(std::string& out, T value, bool bigEndian)
 {
     char bytes[sizeof(T)];
     std::memcpy(bytes, &value, sizeof(T));
@@ -83,8 +81,8 @@ void putBytes(std::string& out, T value, bool bigEndian)
 TEST_F(CloudIO, XyzRoundTripIsExact)
 {
     PointMatrix P(4, 3);
-    P << 0.1, 0.2, 0.3,            //
-        -1e-300, 1e300, 12345.678, //
+    P << 0.1, 0.2, 0.3,             //
+        -1e-300, 1e300, 12345.678,  //
         1.0 / 3.0, -2.0 / 7.0, 0.0, //
         1e6 + 0.001, -2e6, 5e5;
     writeXyz(path("cloud.xyz"), P);
@@ -143,8 +141,7 @@ TEST_F(CloudIO, BinaryPlyLittleAndBigEndian)
             for (int d = 0; d < 3; ++d) {
                 if (bigEndian) {
                     putBytes(content, P(i, d), true);
-                }
-                else {
+                } else {
                     putBytes(content, static_cast<float>(P(i, d)), false);
                 }
             }
@@ -238,16 +235,14 @@ TEST(CheckFinite, NamesTheFirstBadPointAndTheMinimum)
     try {
         checkFinite(P, "selection", 6);
         FAIL() << "no exception for too few points";
-    }
-    catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("selection"), std::string::npos);
     }
     P(3, 2) = std::numeric_limits<double>::infinity();
     try {
         checkFinite(P, "cloud");
         FAIL() << "no exception for an infinite coordinate";
-    }
-    catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("point 4"), std::string::npos) << e.what();
     }
 }

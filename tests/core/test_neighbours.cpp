@@ -149,9 +149,9 @@ TEST(Neighbours, MeanSpacingOfSquareLattice)
 TEST(Neighbours, BadInputThrows)
 {
     const PointMatrix P = randomCloud(10, 3);
-    EXPECT_THROW(nearestNeighbours(P, {10, 0}), std::invalid_argument);  // k == #P
-    EXPECT_THROW(nearestNeighbours(P, {12, 0}), std::invalid_argument);  // k > #P
-    EXPECT_THROW(nearestNeighbours(P, {2, 0}), std::invalid_argument);   // k < 3
+    EXPECT_THROW(nearestNeighbours(P, {10, 0}), std::invalid_argument); // k == #P
+    EXPECT_THROW(nearestNeighbours(P, {12, 0}), std::invalid_argument); // k > #P
+    EXPECT_THROW(nearestNeighbours(P, {2, 0}), std::invalid_argument);  // k < 3
     EXPECT_NO_THROW(nearestNeighbours(P, {9, 0}));
 
     PointMatrix withNan = P;

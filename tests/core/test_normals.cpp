@@ -43,8 +43,8 @@ TEST(Normals, TiltedPlaneFarFromOrigin)
     const Eigen::Vector3d v = n.cross(u);
     PointMatrix P(s.size(), 3);
     for (Eigen::Index i = 0; i < s.size(); ++i) {
-        P.row(i) = (Eigen::Vector3d(1e6, -2e6, 5e5) + s.points(i, 0) * u + s.points(i, 1) * v)
-                       .transpose();
+        P.row(i) =
+            (Eigen::Vector3d(1e6, -2e6, 5e5) + s.points(i, 0) * u + s.points(i, 1) * v).transpose();
     }
     const NormalEstimate e = pcaNormals(P, nearestNeighbours(P));
     for (Eigen::Index i = 0; i < P.rows(); ++i) {

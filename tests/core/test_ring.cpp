@@ -54,8 +54,8 @@ bool interior(const PointMatrix& P, Eigen::Index i, double margin)
 {
     const Eigen::RowVector3d low = P.colwise().minCoeff();
     const Eigen::RowVector3d high = P.colwise().maxCoeff();
-    return P(i, 0) > low(0) + margin && P(i, 0) < high(0) - margin &&
-           P(i, 1) > low(1) + margin && P(i, 1) < high(1) - margin;
+    return P(i, 0) > low(0) + margin && P(i, 0) < high(0) - margin && P(i, 1) > low(1) + margin &&
+           P(i, 1) < high(1) - margin;
 }
 
 } // namespace

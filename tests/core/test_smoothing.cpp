@@ -81,9 +81,8 @@ TEST(Smoothing, SubsetIsNotPulledOverASharpEdge)
     }
     for (Eigen::Index i = 0; i < s.size(); ++i) {
         if (!inFace[i]) {
-            EXPECT_EQ(std::memcmp(smoothed.row(i).data(), s.points.row(i).data(),
-                                  3 * sizeof(double)),
-                      0)
+            EXPECT_EQ(
+                std::memcmp(smoothed.row(i).data(), s.points.row(i).data(), 3 * sizeof(double)), 0)
                 << "point " << i << " outside the subset moved";
         }
     }

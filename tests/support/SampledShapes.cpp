@@ -143,8 +143,7 @@ Sample plane(double size, double spacing, unsigned seed)
     requirePositive(size, "size");
     requirePositive(spacing, "spacing");
     Builder b(seed);
-    b.rectangle(Eigen::Vector3d(-size / 2, -size / 2, 0), axis(0, size), axis(1, size), spacing,
-                0);
+    b.rectangle(Eigen::Vector3d(-size / 2, -size / 2, 0), axis(0, size), axis(1, size), spacing, 0);
     return b.finish();
 }
 
@@ -214,14 +213,13 @@ Sample roundedCube(double edge, double radius, double spacing, unsigned seed)
         }
         b.rectangle(sign * (edge / 2) * axis(a) - (du + dv) / 2, du, dv, spacing, 0);
     }
-    for (int a = 0; a < 3; ++a) {          // fillet axis
+    for (int a = 0; a < 3; ++a) { // fillet axis
         for (int corner = 0; corner < 4; ++corner) {
             const double su = corner & 1 ? -1.0 : 1.0;
             const double sv = corner & 2 ? -1.0 : 1.0;
             const Eigen::Vector3d ex = axis((a + 1) % 3, su);
             const Eigen::Vector3d ey = axis((a + 2) % 3, sv);
-            b.cylinderSector(inner * (ex + ey), radius, side, ex, ey, axis(a), pi / 2, spacing,
-                             1);
+            b.cylinderSector(inner * (ex + ey), radius, side, ex, ey, axis(a), pi / 2, spacing, 1);
         }
     }
     for (int corner = 0; corner < 8; ++corner) {
