@@ -269,6 +269,29 @@ int pruneShortBranches(Graph& g, double minLength)
     return pruned;
 }
 
+/// The direction in which the line of the free end `leaf` leaves it, read from the node
+/// about `length` back along the line; false when the line has no length.
+bool endDirection(const Graph& g, int leaf, double length, Eigen::Vector3d& direction)
+{
+    int previous = leaf;
+    int current = g.neighbours(leaf)[0];
+    while (g.length(leaf, current) < length && g.degree(current) == 2) {
+        const int next = g.neighbours(current)[0] == previous ? g.neighbours(current)[1]
+                                                              : g.neighbours(current)[0];
+        if (next == leaf) {
+            break;
+        }
+        previous = current;
+        current = next;
+    }
+    const Eigen::Vector3d back = g.centre(leaf) - g.centre(current);
+    if (!(back.norm() > 0.0)) {
+        return false;
+    }
+    direction = back.normalized();
+    return true;
+}
+
 /// Reconnection: every free end is joined to the nearest node ahead of it, so that lines
 /// close (the spanning tree broke every cycle of the feature network once) or end on
 /// another line.
@@ -300,24 +323,11 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options)
         if (g.degree(leaf) != 1) {
             continue;
         }
-        // Walk back along the line to find its direction at this end.
-        int previous = leaf;
-        int current = g.neighbours(leaf)[0];
-        while (g.length(leaf, current) < directionLength && g.degree(current) == 2) {
-            const int next = g.neighbours(current)[0] == previous ? g.neighbours(current)[1]
-                                                                  : g.neighbours(current)[0];
-            if (next == leaf) {
-                break;
-            }
-            previous = current;
-            current = next;
-        }
         const Eigen::Vector3d tip = g.centre(leaf);
-        const Eigen::Vector3d back = tip - g.centre(current);
-        if (back.norm() <= 0.0) {
+        Eigen::Vector3d direction;
+        if (!endDirection(g, leaf, directionLength, direction)) {
             continue;
         }
-        const Eigen::Vector3d direction = back.normalized();
         const auto along = g.distancesFrom(leaf, distanceLimit);
         int best = -1;
         double bestDistance = std::numeric_limits<double>::infinity();
@@ -353,6 +363,62 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options)
             continue;
         }
         g.addEdge(p.leaf, p.target);
+        ++added;
+    }
+    return added;
+}
+
+/// Free ends left after the reconnection that face each other across a longer gap (where
+/// noise thinned the candidates of a shallow crease) are joined, end to end: each must lie
+/// ahead of the other, so a line is only ever continued in its own direction.
+int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
+{
+    const double spacing = g.spacing();
+    const double radius = options.facingEndsRadius * spacing;
+    if (!(radius > 0.0)) {
+        return 0;
+    }
+    // Half the reconnection's cone: far apart, two ends of parallel lines running opposite
+    // ways could otherwise face each other across the gap between the lines.
+    const double cosAngle = std::cos(0.5 * options.reconnectAngle * pi / 180.0);
+    const double directionLength = std::max(options.minBranchLength, 1.0) * spacing;
+    std::vector<int> ends;
+    std::vector<Eigen::Vector3d> tips, directions;
+    for (int v = 0; v < g.size(); ++v) {
+        Eigen::Vector3d direction;
+        if (g.degree(v) == 1 && endDirection(g, v, directionLength, direction)) {
+            ends.push_back(v);
+            tips.push_back(g.centre(v));
+            directions.push_back(direction);
+        }
+    }
+    NodeGrid grid(tips, radius);
+    std::vector<std::tuple<double, int, int>> proposals;
+    for (int a = 0; a < static_cast<int>(ends.size()); ++a) {
+        grid.forEachWithin(tips[a], radius, [&](int b) {
+            if (b <= a) {
+                return;
+            }
+            const Eigen::Vector3d step = tips[b] - tips[a];
+            const double distance = step.norm();
+            if (distance > 0.0 && step.dot(directions[a]) >= cosAngle * distance &&
+                -step.dot(directions[b]) >= cosAngle * distance) {
+                proposals.emplace_back(distance, a, b);
+            }
+        });
+    }
+    std::sort(proposals.begin(), proposals.end());
+    int added = 0;
+    for (const auto& [distance, a, b] : proposals) {
+        const int u = ends[a], v = ends[b];
+        if (g.degree(u) != 1 || g.degree(v) != 1) {
+            continue;
+        }
+        const auto along = g.distancesFrom(u, options.minCycleRatio * distance);
+        if (along.count(v)) {
+            continue; // the two ends of one short piece
+        }
+        g.addEdge(u, v);
         ++added;
     }
     return added;
@@ -742,6 +808,7 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
     if (options.reconnectRadius > 0.0) {
         result.counts.reconnections = reconnectEnds(graph, options);
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
+        result.counts.reconnections += joinFacingEnds(graph, options);
     }
     result.counts.bubbles = removeBubbles(graph, options.maxBubbleLength * spacing);
     result.counts.mergedJunctions =
