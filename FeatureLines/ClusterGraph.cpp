@@ -566,25 +566,27 @@ int dropShortComponents(Graph& g, double minLength, double minOpenLength)
     return dropped;
 }
 
-/// One smoothing pass with weights (1/4, 1/2, 1/4); the ends of an open line stay put.
-void smoothOnce(PointMatrix& points, bool closed)
+} // namespace
+
+PointMatrix smoothPolyline(const PointMatrix& points, bool closed, int passes)
 {
+    PointMatrix smoothed = points;
     const Eigen::Index m = points.rows();
     if (m < 3) {
-        return;
+        return smoothed;
     }
-    const PointMatrix old = points;
-    for (Eigen::Index i = 0; i < m; ++i) {
-        if (!closed && (i == 0 || i == m - 1)) {
-            continue;
+    for (int pass = 0; pass < passes; ++pass) {
+        const PointMatrix old = smoothed;
+        for (Eigen::Index i = 0; i < m; ++i) {
+            if (!closed && (i == 0 || i == m - 1)) {
+                continue;
+            }
+            smoothed.row(i) = 0.25 * old.row((i + m - 1) % m) + 0.5 * old.row(i) +
+                              0.25 * old.row((i + 1) % m);
         }
-        const Eigen::Index before = (i + m - 1) % m;
-        const Eigen::Index after = (i + 1) % m;
-        points.row(i) = 0.25 * old.row(before) + 0.5 * old.row(i) + 0.25 * old.row(after);
     }
+    return smoothed;
 }
-
-} // namespace
 
 PointMatrix resamplePolyline(const PointMatrix& points, bool closed, double step)
 {
@@ -890,9 +892,7 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         for (std::size_t i = 0; i < chain.size(); ++i) {
             points.row(i) = centres[chain[i]].transpose();
         }
-        for (int pass = 0; pass < options.smoothingPasses; ++pass) {
-            smoothOnce(points, closed);
-        }
+        points = smoothPolyline(points, closed, options.smoothingPasses);
         if (options.resampleSpacing > 0.0) {
             points = resamplePolyline(points, closed, options.resampleSpacing * spacing);
         }

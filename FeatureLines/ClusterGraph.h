@@ -152,6 +152,10 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
                                const ClusterGraphOptions& options = {},
                                const std::vector<int>& clusterLabel = {});
 
+/// `passes` rounds of (1/4, 1/2, 1/4) smoothing of the vertices of a polyline; the two ends of
+/// an open line stay put.
+PointMatrix smoothPolyline(const PointMatrix& points, bool closed, int passes);
+
 /// The polyline `points` resampled at equal arc-length steps as close to `step` as the length
 /// allows; an open line keeps its two end points exactly, a closed line gets at least three
 /// vertices. Lines shorter than a step keep their ends only.

@@ -369,22 +369,12 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
             for (std::size_t i = 0; i < vertices.size(); ++i) {
                 points.row(i) = vertices[i].transpose();
             }
-            ClusterGraphOptions smoothing = options.graph;
-            for (int pass = 0; pass < smoothing.smoothingPasses; ++pass) {
-                const PointMatrix old = points;
-                const Eigen::Index m = points.rows();
-                for (Eigen::Index i = 0; i < m && m >= 3; ++i) {
-                    if (!line.closed && (i == 0 || i == m - 1)) {
-                        continue;
-                    }
-                    points.row(i) = 0.25 * old.row((i + m - 1) % m) + 0.5 * old.row(i) +
-                                    0.25 * old.row((i + 1) % m);
-                }
+            points = smoothPolyline(points, line.closed, options.graph.smoothingPasses);
+            if (options.graph.resampleSpacing > 0.0) {
+                points = resamplePolyline(points, line.closed,
+                                          options.graph.resampleSpacing * spacing);
             }
-            line.points = smoothing.resampleSpacing > 0.0
-                              ? resamplePolyline(points, line.closed,
-                                                 smoothing.resampleSpacing * spacing)
-                              : points;
+            line.points = std::move(points);
             result.network.lines.push_back(std::move(line));
             continue;
         }
