@@ -20,6 +20,7 @@
 #include <Mod/Points/App/PointsPy.h>
 #include <Standard_Failure.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
