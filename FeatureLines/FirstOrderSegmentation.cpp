@@ -155,13 +155,15 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         if (!grows[i]) {
             continue;
         }
+        int root = findRoot(parent, static_cast<int>(i));
         for (int j = 0; j < k; ++j) {
             const int q = N.indices(i, j);
             if (grows[q] && similarity(i, q) >= cosJoin) {
-                const int a = findRoot(parent, static_cast<int>(i));
-                const int b = findRoot(parent, q);
-                if (a != b) {
-                    parent[std::max(a, b)] = std::min(a, b);
+                const int other = findRoot(parent, q);
+                if (other != root) {
+                    // The smaller root survives, as i's root is looked up only once.
+                    parent[std::max(root, other)] = std::min(root, other);
+                    root = std::min(root, other);
                 }
             }
         }
