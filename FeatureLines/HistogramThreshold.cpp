@@ -123,8 +123,8 @@ void scanStart(const std::vector<long>& h, int start, double minPeak, Candidate&
         }
         Candidate c;
         // e = b1 / b2, and b1 when the valley is empty (Sec. 2.2).
-        c.ratio = b2 != 0 ? static_cast<double>(b1) / static_cast<double>(b2)
-                          : static_cast<double>(b1);
+        c.ratio =
+            b2 != 0 ? static_cast<double>(b1) / static_cast<double>(b2) : static_cast<double>(b1);
         c.start = start;
         c.k = k;
         c.b1 = b1;
@@ -170,9 +170,8 @@ ThresholdResult search(const std::vector<double>& values, const ThresholdOptions
     }
     const auto [lo, hi] = std::minmax_element(kept.begin(), kept.end());
     if (*lo == *hi) {
-        throw std::invalid_argument(std::string("threshold: all values") + where +
-                                    " are equal (" + number(*lo) +
-                                    "), there is no valley to put a threshold in");
+        throw std::invalid_argument(std::string("threshold: all values") + where + " are equal (" +
+                                    number(*lo) + "), there is no valley to put a threshold in");
     }
 
     result.histogram = buildHistogram(kept, options.bins);

@@ -21,13 +21,15 @@ PclCloud::PclCloud(const PointMatrix& P) : data_(new Data)
     pcl::PointCloud<pcl::PointXYZ>& cloud = *data_->cloud;
     cloud.resize(static_cast<std::size_t>(P.rows()));
     for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        cloud[static_cast<std::size_t>(i)] =
-            pcl::PointXYZ(static_cast<float>(P(i, 0)), static_cast<float>(P(i, 1)),
-                          static_cast<float>(P(i, 2)));
+        cloud[static_cast<std::size_t>(i)] = pcl::PointXYZ(
+            static_cast<float>(P(i, 0)), static_cast<float>(P(i, 1)), static_cast<float>(P(i, 2)));
     }
 }
 
-PclCloud::~PclCloud() { delete data_; }
+PclCloud::~PclCloud()
+{
+    delete data_;
+}
 
 std::size_t PclCloud::normalEstimationOmp(int k, int threads) const
 {
@@ -58,7 +60,8 @@ std::size_t PclCloud::kdTreeFlannKnn(int k, int threads) const
             tree.nearestKSearch(cloud[static_cast<std::size_t>(i)], k + 1, found, squared);
             // The first hit is the point itself (or a duplicate of it): keep the next k.
             for (int j = 0; j < k; ++j) {
-                indices[static_cast<std::size_t>(i * k + j)] = found[static_cast<std::size_t>(j + 1)];
+                indices[static_cast<std::size_t>(i * k + j)] =
+                    found[static_cast<std::size_t>(j + 1)];
                 distances[static_cast<std::size_t>(i * k + j)] =
                     squared[static_cast<std::size_t>(j + 1)];
             }

@@ -54,8 +54,8 @@ double spacingFor(long points)
     const double pi = std::acos(-1.0);
     const double flat = cubeEdge - 2.0 * cubeRadius;
     // Six flat squares, twelve quarter cylinders, eight eighth spheres.
-    const double area = 6.0 * flat * flat + 6.0 * pi * cubeRadius * flat +
-                        4.0 * pi * cubeRadius * cubeRadius;
+    const double area =
+        6.0 * flat * flat + 6.0 * pi * cubeRadius * flat + 4.0 * pi * cubeRadius * cubeRadius;
     return std::sqrt(area / static_cast<double>(points));
 }
 
@@ -178,13 +178,11 @@ Result runOne(long requestedPoints, int runs, int threads)
 {
     Result result;
     result.spacing = spacingFor(requestedPoints);
-    const shapes::Sample cube =
-        shapes::roundedCube(cubeEdge, cubeRadius, result.spacing, cubeSeed);
+    const shapes::Sample cube = shapes::roundedCube(cubeEdge, cubeRadius, result.spacing, cubeSeed);
     const PointMatrix& P = cube.points;
     result.points = static_cast<long>(P.rows());
     const auto n = static_cast<std::size_t>(P.rows());
-    std::cerr << "rounded cube: " << result.points << " points, spacing " << result.spacing
-              << "\n";
+    std::cerr << "rounded cube: " << result.points << " points, spacing " << result.spacing << "\n";
 
     NeighbourOptions nopt;
     nopt.k = 16;
@@ -292,19 +290,19 @@ void printMachine(std::ostream& out, int threads, int runs)
 
 void printTable(std::ostream& out, const Result& r, bool markdown)
 {
-    const std::vector<std::string> header{"stage",      "median s",     "min..max s",
-                                          "CPU s",      "Mpoints/s",    "output MiB",
+    const std::vector<std::string> header{"stage",        "median s",        "min..max s",
+                                          "CPU s",        "Mpoints/s",       "output MiB",
                                           "peak RSS MiB", "peak - start MiB"};
     std::vector<std::vector<std::string>> cells;
     for (const Row& row : r.rows) {
         const auto [lo, hi] = std::minmax_element(row.seconds.begin(), row.seconds.end());
         cells.push_back({row.stage, fixed(row.median(), 3), fixed(*lo, 3) + ".." + fixed(*hi, 3),
                          fixed(row.medianCpu(), 3), fixed(r.points / row.median() / 1e6, 2),
-                         fixed(row.outputMiB, 1),
-                         fixed(row.peakRssMiB, 0),
+                         fixed(row.outputMiB, 1), fixed(row.peakRssMiB, 0),
                          fixed(std::max(0.0, row.peakRssMiB - row.startRssMiB), 0)});
     }
-    out << "\n" << (markdown ? "### " : "") << r.points << " points (rounded cube, spacing "
+    out << "\n"
+        << (markdown ? "### " : "") << r.points << " points (rounded cube, spacing "
         << fixed(r.spacing, 4) << ")\n\n";
     std::vector<std::size_t> width(header.size());
     for (std::size_t c = 0; c < header.size(); ++c) {
@@ -316,15 +314,16 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
     const auto printLine = [&](const std::vector<std::string>& line) {
         for (std::size_t c = 0; c < line.size(); ++c) {
             const std::string pad(width[c] - line[c].size(), ' ');
-            out << (markdown ? "| " : (c ? "  " : ""))
-                << (c == 0 ? line[c] + pad : pad + line[c]) << (markdown ? " " : "");
+            out << (markdown ? "| " : (c ? "  " : "")) << (c == 0 ? line[c] + pad : pad + line[c])
+                << (markdown ? " " : "");
         }
         out << (markdown ? "|" : "") << "\n";
     };
     printLine(header);
     if (markdown) {
         for (std::size_t c = 0; c < header.size(); ++c) {
-            out << "|" << (c ? std::string(width[c] + 1, '-') + ":" : std::string(width[c] + 2, '-'));
+            out << "|"
+                << (c ? std::string(width[c] + 1, '-') + ":" : std::string(width[c] + 2, '-'));
         }
         out << "|\n";
     }
@@ -348,8 +347,7 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
           pclNormalsStage, &Row::median);
     ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, CPU: ", perPoint,
           pclNormalsStage, &Row::medianCpu);
-    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage,
-          &Row::median);
+    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage, &Row::median);
     ratio("kNN alone, nanoflann / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
           &Row::medianCpu);
 }

@@ -136,8 +136,8 @@ public:
     {
         double v = 0.0;
         const char* first = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
-        const auto [end, ec] = std::from_chars(first, s.data() + s.size(), v,
-                                               std::chars_format::general);
+        const auto [end, ec] =
+            std::from_chars(first, s.data() + s.size(), v, std::chars_format::general);
         if (s.empty() || ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
             throw UsageError(name + " needs a finite number, got '" + s + "'");
         }

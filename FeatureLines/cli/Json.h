@@ -17,19 +17,29 @@ inline std::string string(const std::string& s)
     std::string out = "\"";
     for (const char c : s) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            case '\r': out += "\\r"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buffer[8];
-                    std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
-                    out += buffer;
-                } else {
-                    out += c;
-                }
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20) {
+                char buffer[8];
+                std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
+                out += buffer;
+            } else {
+                out += c;
+            }
         }
     }
     return out + "\"";
@@ -41,10 +51,12 @@ inline std::string number(double v)
     return std::isfinite(v) ? Arguments::format(v) : std::string("null");
 }
 
-inline std::string number(long v) { return std::to_string(v); }
+inline std::string number(long v)
+{
+    return std::to_string(v);
+}
 
-template <typename T>
-std::string array(const std::vector<T>& values)
+template <typename T> std::string array(const std::vector<T>& values)
 {
     std::string out = "[";
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -52,5 +64,20 @@ std::string array(const std::vector<T>& values)
     }
     return out + "]";
 }
+
+/// A JSON object written in the order its members are added; values are JSON text already.
+class Object
+{
+public:
+    Object& add(const std::string& key, const std::string& jsonValue)
+    {
+        text_ += (text_.empty() ? "" : ", ") + string(key) + ": " + jsonValue;
+        return *this;
+    }
+    std::string str() const { return "{" + text_ + "}"; }
+
+private:
+    std::string text_;
+};
 
 } // namespace featurelines::cli::json

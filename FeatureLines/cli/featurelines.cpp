@@ -73,8 +73,14 @@ std::string inputPath(const Arguments& a)
     return a.positional()[0];
 }
 
-int neighbourCount(const Arguments& a) { return static_cast<int>(a.integer("--k", 16, 3, 10000)); }
-int threadCount(const Arguments& a) { return static_cast<int>(a.integer("--threads", 0, 0, 4096)); }
+int neighbourCount(const Arguments& a)
+{
+    return static_cast<int>(a.integer("--k", 16, 3, 10000));
+}
+int threadCount(const Arguments& a)
+{
+    return static_cast<int>(a.integer("--threads", 0, 0, 4096));
+}
 
 /// The options of the curvature stages, read (and checked) before the cloud is.
 struct CurvatureSettings
@@ -196,10 +202,9 @@ int runThreshold(const Arguments& a)
         throw UsageError("--below and --above exclude each other");
     }
     const bool below = a.has("--below"), above = a.has("--above");
-    const double previous =
-        below   ? Arguments::parseNumber("--below", a.text("--below"))
-        : above ? Arguments::parseNumber("--above", a.text("--above"))
-                : 0.0;
+    const double previous = below   ? Arguments::parseNumber("--below", a.text("--below"))
+                            : above ? Arguments::parseNumber("--above", a.text("--above"))
+                                    : 0.0;
     const CurvatureSettings settings = curvatureSettings(a);
 
     const Eigen::VectorXd H = curvatureOf(settings, readCloud(input));
@@ -208,8 +213,8 @@ int runThreshold(const Arguments& a)
     const ThresholdResult r = below   ? findLowerThreshold(values, previous, options)
                               : above ? findHigherThreshold(values, previous, options)
                                       : findThreshold(values, options);
-    const long low = std::count_if(values.begin(), values.end(),
-                                   [&](double v) { return v <= r.threshold; });
+    const long low =
+        std::count_if(values.begin(), values.end(), [&](double v) { return v <= r.threshold; });
     const long high = static_cast<long>(values.size()) - low;
 
     if (!a.has("--json")) {
@@ -228,26 +233,28 @@ int runThreshold(const Arguments& a)
         edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
     }
     using namespace json;
-    std::cout << "{"
-              << string("points") << ": " << number(static_cast<long>(values.size())) << ", "
-              << string("threshold") << ": " << number(r.threshold) << ", "
-              << string("ratio") << ": " << number(r.ratio) << ", "
-              << string("start_curv") << ": " << number(r.startCurv) << ", "
-              << string("joined_bins") << ": " << number(static_cast<long>(r.joinedBins)) << ", "
-              << string("peak_count") << ": " << number(r.peakCount) << ", "
-              << string("valley_count") << ": " << number(r.valleyCount) << ", "
-              << string("outlier_cut") << ": " << number(r.outlierCut) << ", "
-              << string("low_points") << ": " << number(low) << ", "
-              << string("high_points") << ": " << number(high) << ", "
-              << string("search") << ": "
-              << string(options.search == ThresholdSearch::SingleRun ? "single-run" : "all-starts")
-              << ", " << string("range") << ": "
-              << string(below ? "below" : above ? "above" : "all") << ", "
-              << string("histogram") << ": {" << string("minimum") << ": " << number(h.minimum)
-              << ", " << string("maximum") << ": " << number(h.maximum) << ", "
-              << string("bin_width") << ": " << number(h.binWidth) << ", " << string("counts")
-              << ": " << array(h.counts) << "}, " << string("bin_edges") << ": " << array(edges)
-              << "}\n";
+    Object histogram;
+    histogram.add("minimum", number(h.minimum))
+        .add("maximum", number(h.maximum))
+        .add("bin_width", number(h.binWidth))
+        .add("counts", array(h.counts));
+    Object result;
+    result.add("points", number(static_cast<long>(values.size())))
+        .add("threshold", number(r.threshold))
+        .add("ratio", number(r.ratio))
+        .add("start_curv", number(r.startCurv))
+        .add("joined_bins", number(static_cast<long>(r.joinedBins)))
+        .add("peak_count", number(r.peakCount))
+        .add("valley_count", number(r.valleyCount))
+        .add("outlier_cut", number(r.outlierCut))
+        .add("low_points", number(low))
+        .add("high_points", number(high))
+        .add("search",
+             string(options.search == ThresholdSearch::SingleRun ? "single-run" : "all-starts"))
+        .add("range", string(below ? "below" : (above ? "above" : "all")))
+        .add("histogram", histogram.str())
+        .add("bin_edges", array(edges));
+    std::cout << result.str() << "\n";
     return 0;
 }
 
@@ -265,8 +272,11 @@ const std::vector<Command>& commands()
         {"curvature",
          "mean curvature of every point, one value per line in input order (Sec. 2.1)",
          "INPUT -o FILE [--k N] [--signed] [--smooth N]",
-         {{"--output", "FILE", "the file to write", "-o"}, kOption(), signedOption(),
-          smoothOption(), threadsOption()},
+         {{"--output", "FILE", "the file to write", "-o"},
+          kOption(),
+          signedOption(),
+          smoothOption(),
+          threadsOption()},
          runCurvature},
         {"threshold",
          "curvature threshold by multi-resolution histogram analysis (Sec. 2.2-2.4)",
@@ -282,7 +292,10 @@ const std::vector<Command>& commands()
            "smallest peak a threshold may follow, in percent of the values (default 1)"},
           {"--single-run", "", "start_curv = min(curv) only, the paper's short pseudo-code"},
           {"--json", "", "print one JSON object with the histogram and its bin edges"},
-          kOption(), signedOption(), smoothOption(), threadsOption()},
+          kOption(),
+          signedOption(),
+          smoothOption(),
+          threadsOption()},
          runThreshold},
     };
     return table;
@@ -369,8 +382,7 @@ int runMain(const std::vector<std::string>& words)
     try {
         return command->run(Arguments(rest, command->options));
     } catch (const UsageError& e) {
-        throw UsageError(std::string(e.what()) + " (featurelines " + command->name +
-                         " --help)");
+        throw UsageError(std::string(e.what()) + " (featurelines " + command->name + " --help)");
     }
 }
 

@@ -72,9 +72,10 @@ Reference bruteForce(const std::vector<long>& h, bool allStarts, double minPeak)
                 continue;
             }
             const double e = b2 != 0 ? double(b1) / double(b2) : double(b1);
-            const bool better = e > best.ratio ||
-                                (e == best.ratio && (i + k < best.start + best.k ||
-                                                     (i + k == best.start + best.k && i < best.start)));
+            const bool better =
+                e > best.ratio ||
+                (e == best.ratio &&
+                 (i + k < best.start + best.k || (i + k == best.start + best.k && i < best.start)));
             if (better) {
                 best = {e, i, k};
             }
@@ -312,7 +313,9 @@ TEST(HistogramThreshold, BadInputThrowsWithAReason)
     EXPECT_NE(message([&] { buildHistogram(good, 1); }).find("bins"), std::string::npos);
     EXPECT_NE(message([&] { buildHistogram({}, 10); }).find("no values"), std::string::npos);
     EXPECT_NE(message([&] { buildHistogram({0.0, NAN}, 10); }).find("NaN"), std::string::npos);
-    EXPECT_NE(message([&] { buildHistogram({INFINITY, 0.0}, 10); }).find("infinite"),
+    EXPECT_NE(message([&] {
+                  buildHistogram({INFINITY, 0.0}, 10);
+              }).find("infinite"),
               std::string::npos);
 
     ThresholdOptions options;
@@ -321,8 +324,7 @@ TEST(HistogramThreshold, BadInputThrowsWithAReason)
     for (double pct : {-1.0, 100.0, 150.0, double(NAN)}) {
         options = {};
         options.outlierPercent = pct;
-        EXPECT_NE(message([&] { findThreshold(good, options); }).find("outlier"),
-                  std::string::npos)
+        EXPECT_NE(message([&] { findThreshold(good, options); }).find("outlier"), std::string::npos)
             << pct;
     }
     options = {};
@@ -335,8 +337,7 @@ TEST(HistogramThreshold, BadInputThrowsWithAReason)
     EXPECT_NE(message([&] { findLowerThreshold(good, -1.0); }).find("no values"),
               std::string::npos);
     EXPECT_NE(message([&] { findHigherThreshold(good, 2.5); }).find("equal"), std::string::npos);
-    EXPECT_NE(message([&] { findLowerThreshold(good, NAN); }).find("threshold"),
-              std::string::npos);
+    EXPECT_NE(message([&] { findLowerThreshold(good, NAN); }).find("threshold"), std::string::npos);
 
     // One stray low value under a single spike at the top: no peak to put a threshold after.
     std::vector<double> spike(999, 1.0);
