@@ -9,6 +9,14 @@
 // first-order segmentation, the border points of the label growing, the boundary points of an
 // open cloud); its output is a network of polylines through those candidates that close on
 // themselves or end on other lines.
+//
+// The steps, in order (the paper names the graphs; what each step does is designed here):
+// candidate clusters gathered into nodes; G_all (nodes adjacent through the k nearest
+// neighbours); G_extended (plus nodes within extendedRadius); its minimum spanning forest
+// with overlong edges cut (G_pruned_mst); short branches cut (G_pruned_branches); free ends
+// reconnected to the nearest node ahead, then facing free ends joined across longer gaps;
+// bubbles (parallel chains) removed; close junctions merged; short pieces dropped; lines
+// read off as chains between nodes of degree other than 2, and cycles.
 #pragma once
 
 #include <vector>
