@@ -158,6 +158,14 @@ public:
         drop(adjacency_[b], a);
     }
 
+    /// A node with no points of its own (where the lines of free ends meet).
+    int addNode(const Eigen::Vector3d& centre)
+    {
+        centres_.push_back(centre);
+        adjacency_.emplace_back();
+        return static_cast<int>(adjacency_.size()) - 1;
+    }
+
     void isolate(int v)
     {
         const std::vector<int> n = adjacency_[v];
@@ -292,10 +300,39 @@ bool endDirection(const Graph& g, int leaf, double length, Eigen::Vector3d& dire
     return true;
 }
 
+/// Where the rays a + t da and b + u db (unit directions) pass closest: true when both t and
+/// u lie in [0, reach], the rays are more than 20 degrees from parallel (parallel ends are
+/// joined end to end, not at a corner) and they pass within `tolerance` of each other;
+/// `where` is then the middle of the closest points and `along` is t + u.
+bool raysMeet(const Eigen::Vector3d& a, const Eigen::Vector3d& da, const Eigen::Vector3d& b,
+              const Eigen::Vector3d& db, double reach, double tolerance, Eigen::Vector3d& where,
+              double& along)
+{
+    const Eigen::Vector3d w = a - b;
+    const double c = da.dot(db);
+    const double denominator = 1.0 - c * c;
+    if (denominator < std::pow(std::sin(20.0 * pi / 180.0), 2)) {
+        return false;
+    }
+    const double d = da.dot(w), e = db.dot(w);
+    const double t = (c * e - d) / denominator;
+    const double u = (e - c * d) / denominator;
+    if (t < 0.0 || u < 0.0 || t > reach || u > reach) {
+        return false;
+    }
+    const Eigen::Vector3d pa = a + t * da, pb = b + u * db;
+    if ((pa - pb).norm() > tolerance) {
+        return false;
+    }
+    where = 0.5 * (pa + pb);
+    along = t + u;
+    return true;
+}
+
 /// Reconnection: every free end is joined to the nearest node ahead of it, so that lines
 /// close (the spanning tree broke every cycle of the feature network once) or end on
 /// another line.
-int reconnectEnds(Graph& g, const ClusterGraphOptions& options)
+int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels)
 {
     const double spacing = g.spacing();
     const double radius = options.reconnectRadius * spacing;
@@ -362,7 +399,22 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options)
         if (g.degree(p.leaf) != 1 || g.degree(p.target) == 0 || !acceptable(p.leaf, p.target)) {
             continue;
         }
-        g.addEdge(p.leaf, p.target);
+        // Two free ends whose lines meet at an angle are joined through the corner where
+        // they meet: a straight join would cut it.
+        Eigen::Vector3d from, to, corner;
+        double along = 0.0;
+        if (g.degree(p.target) == 1 && endDirection(g, p.leaf, directionLength, from) &&
+            endDirection(g, p.target, directionLength, to) &&
+            raysMeet(g.centre(p.leaf), from, g.centre(p.target), to, radius,
+                     0.5 * options.maxEdgeLength * spacing, corner, along)) {
+            const int node = g.addNode(corner);
+            labels.push_back(labels[p.leaf]);
+            g.addEdge(p.leaf, node);
+            g.addEdge(node, p.target);
+        }
+        else {
+            g.addEdge(p.leaf, p.target);
+        }
         ++added;
     }
     return added;
@@ -420,6 +472,75 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
         }
         g.addEdge(u, v);
         ++added;
+    }
+    return added;
+}
+
+/// Free ends still left whose lines, continued straight ahead, meet within twice
+/// reconnectRadius are joined through a new node where they meet: the corner of two creases whose last few
+/// spacings (and the faint edges between them, as at the triangles of a chamfered box's
+/// corners) left no candidates. Further free ends heading for that node join it too.
+int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels)
+{
+    const double spacing = g.spacing();
+    const double reach = 2.0 * options.reconnectRadius * spacing;
+    const double tolerance = 0.5 * options.maxEdgeLength * spacing;
+    const double directionLength = std::max(options.minBranchLength, 1.0) * spacing;
+    if (!(reach > 0.0)) {
+        return 0;
+    }
+    struct End
+    {
+        int node;
+        Eigen::Vector3d tip, direction;
+    };
+    std::vector<End> ends;
+    for (int v = 0; v < g.size(); ++v) {
+        Eigen::Vector3d direction;
+        if (g.degree(v) == 1 && endDirection(g, v, directionLength, direction)) {
+            ends.push_back({v, g.centre(v), direction});
+        }
+    }
+    auto meet = [&](const End& a, const End& b, Eigen::Vector3d& where, double& along) {
+        return raysMeet(a.tip, a.direction, b.tip, b.direction, reach, tolerance, where, along);
+    };
+    std::vector<std::tuple<double, int, int>> pairs;
+    for (int a = 0; a < static_cast<int>(ends.size()); ++a) {
+        for (int b = a + 1; b < static_cast<int>(ends.size()); ++b) {
+            Eigen::Vector3d where;
+            double along = 0.0;
+            if ((ends[a].tip - ends[b].tip).norm() <= 2.0 * reach &&
+                meet(ends[a], ends[b], where, along)) {
+                pairs.emplace_back(along, a, b);
+            }
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    int added = 0;
+    for (const auto& [along, a, b] : pairs) {
+        if (g.degree(ends[a].node) != 1 || g.degree(ends[b].node) != 1) {
+            continue;
+        }
+        Eigen::Vector3d where;
+        double unused = 0.0;
+        meet(ends[a], ends[b], where, unused);
+        const int corner = g.addNode(where);
+        labels.push_back(labels[ends[a].node]);
+        g.addEdge(ends[a].node, corner);
+        g.addEdge(corner, ends[b].node);
+        ++added;
+        // Other free ends heading for the same corner.
+        for (const End& c : ends) {
+            if (g.degree(c.node) != 1) {
+                continue;
+            }
+            const Eigen::Vector3d step = where - c.tip;
+            const double t = step.dot(c.direction);
+            if (t >= 0.0 && t <= reach && (step - t * c.direction).norm() <= tolerance) {
+                g.addEdge(c.node, corner);
+                ++added;
+            }
+        }
     }
     return added;
 }
@@ -568,14 +689,18 @@ int dropShortComponents(Graph& g, double minLength, double minOpenLength)
 
 } // namespace
 
-PointMatrix smoothPolyline(const PointMatrix& points, bool closed, int passes)
+PointMatrix smoothPolyline(const PointMatrix& points, bool closed, double length)
 {
-    PointMatrix smoothed = points;
-    const Eigen::Index m = points.rows();
-    if (m < 3) {
-        return smoothed;
+    if (!(length > 0.0) || points.rows() < 3) {
+        return points;
     }
-    for (int pass = 0; pass < passes; ++pass) {
+    // Each pass of (1/4, 1/2, 1/4) adds a variance of half a step squared: eight passes at a
+    // step of length / 2 give a variance of length^2.
+    const double step = 0.5 * length;
+    const int passes = 8;
+    PointMatrix smoothed = resamplePolyline(points, closed, step);
+    const Eigen::Index m = smoothed.rows();
+    for (int pass = 0; pass < passes && m >= 3; ++pass) {
         const PointMatrix old = smoothed;
         for (Eigen::Index i = 0; i < m; ++i) {
             if (!closed && (i == 0 || i == m - 1)) {
@@ -808,9 +933,10 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
     const double minBranch = options.minBranchLength * spacing;
     result.counts.prunedBranches = pruneShortBranches(graph, minBranch);
     if (options.reconnectRadius > 0.0) {
-        result.counts.reconnections = reconnectEnds(graph, options);
+        result.counts.reconnections = reconnectEnds(graph, options, nodeLabel);
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
         result.counts.reconnections += joinFacingEnds(graph, options);
+        result.counts.reconnections += joinConvergingEnds(graph, options, nodeLabel);
     }
     result.counts.bubbles = removeBubbles(graph, options.maxBubbleLength * spacing);
     result.counts.mergedJunctions =
@@ -819,14 +945,16 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         dropShortComponents(graph, options.minComponentLength * spacing,
                             options.minOpenComponentLength * spacing);
 
-    result.nodes.resize(nodeCount, 3);
-    for (int v = 0; v < nodeCount; ++v) {
+    // The joins of converging ends may have added nodes.
+    const int finalCount = graph.size();
+    result.nodes.resize(finalCount, 3);
+    for (int v = 0; v < finalCount; ++v) {
         result.nodes.row(v) = centres[v].transpose();
     }
 
     // Polylines: chains between nodes of degree other than 2, then the cycles left.
-    std::vector<int> junctionOf(nodeCount, -1);
-    for (int v = 0; v < nodeCount; ++v) {
+    std::vector<int> junctionOf(finalCount, -1);
+    for (int v = 0; v < finalCount; ++v) {
         if (graph.degree(v) >= 3) {
             junctionOf[v] = static_cast<int>(result.junctionNodes.size());
             result.junctionNodes.push_back(v);
@@ -854,7 +982,7 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         return chain;
     };
     std::vector<std::pair<std::vector<int>, bool>> chains;
-    for (int v = 0; v < nodeCount; ++v) {
+    for (int v = 0; v < finalCount; ++v) {
         if (graph.degree(v) == 0 || graph.degree(v) == 2) {
             continue;
         }
@@ -864,7 +992,7 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
             }
         }
     }
-    for (int v = 0; v < nodeCount; ++v) {
+    for (int v = 0; v < finalCount; ++v) {
         if (graph.degree(v) == 2 && !walked.count(pairKey(v, graph.neighbours(v)[0]))) {
             std::vector<int> cycle = walk(v, graph.neighbours(v)[0]);
             cycle.pop_back(); // the walk returns to v
@@ -892,7 +1020,7 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         for (std::size_t i = 0; i < chain.size(); ++i) {
             points.row(i) = centres[chain[i]].transpose();
         }
-        points = smoothPolyline(points, closed, options.smoothingPasses);
+        points = smoothPolyline(points, closed, options.smoothingLength * spacing);
         if (options.resampleSpacing > 0.0) {
             points = resamplePolyline(points, closed, options.resampleSpacing * spacing);
         }

@@ -105,11 +105,15 @@ struct ClusterGraphOptions
     /// short piece ending in nothing on both sides is noise gathered along a curved surface
     /// rather than a feature; a longer one is kept (a broken feature still marks an edge).
     double minOpenComponentLength = 15.0;
-    /// Passes of (1/4, 1/2, 1/4) smoothing of the vertices of every line before resampling;
-    /// junctions and free ends stay put. 0 keeps the node centres.
-    int smoothingPasses = 2;
     /// Output lines are resampled at this step; 0 keeps one vertex per node.
     double resampleSpacing = 1.0;
+    /// Lines are smoothed along their length over about this distance (the standard deviation
+    /// of the equivalent Gaussian; 0: not at all), junctions and free ends staying put. Node
+    /// centres wander across a band a few points wide with wavelengths of 2-6 spacings: 2
+    /// spacings damp that to a few percent (1 leaves a ring's length 7 % long) and round a
+    /// right-angled corner by one or two spacings. Sharp lines are not smoothed but placed on
+    /// the crease (SharpEdges.h).
+    double smoothingLength = 2.0;
 };
 
 /// What each stage of the graph processing did, for diagnostics and tests.
@@ -160,9 +164,11 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
                                const ClusterGraphOptions& options = {},
                                const std::vector<int>& clusterLabel = {});
 
-/// `passes` rounds of (1/4, 1/2, 1/4) smoothing of the vertices of a polyline; the two ends of
-/// an open line stay put.
-PointMatrix smoothPolyline(const PointMatrix& points, bool closed, int passes);
+/// The polyline smoothed along its length over `length` (the standard deviation of the
+/// equivalent Gaussian): resampled at a quarter of `length`, then eight passes of (1/4, 1/2,
+/// 1/4) weights, which is what makes a smoothing by vertex count one by length. The ends of an
+/// open line stay put; the result has the fine vertices (resample it after).
+PointMatrix smoothPolyline(const PointMatrix& points, bool closed, double length);
 
 /// The polyline `points` resampled at equal arc-length steps as close to `step` as the length
 /// allows; an open line keeps its two end points exactly, a closed line gets at least three

@@ -323,7 +323,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
         }
     }
     ClusterGraphOptions graphOptions = options.graph;
-    graphOptions.smoothingPasses = 0;
+    graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
     const ClusterGraph graph = buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label);
     result.counts = graph.counts;
@@ -334,6 +334,22 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     for (Eigen::Index i = 0; i < n; ++i) {
         if (graph.nodeOfPoint[i] >= 0) {
             nodePoints[graph.nodeOfPoint[i]].push_back(static_cast<int>(i));
+        }
+    }
+    // A node where the lines of free ends were joined has no points of its own: the search
+    // for its faces starts from the points of the nodes beside it on its lines.
+    for (const std::vector<int>& nodes : graph.lineNodes) {
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            if (!nodePoints[nodes[i]].empty()) {
+                continue;
+            }
+            for (std::size_t j : {i - 1, i + 1}) {
+                if (j < nodes.size() && nodes[j] != nodes[i]) {
+                    const std::vector<int>& beside = nodePoints[nodes[j]];
+                    nodePoints[nodes[i]].insert(nodePoints[nodes[i]].end(), beside.begin(),
+                                                beside.end());
+                }
+            }
         }
     }
     std::vector<char> isJunction(nodeCount, 0);
@@ -381,7 +397,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
             for (std::size_t i = 0; i < vertices.size(); ++i) {
                 points.row(i) = vertices[i].transpose();
             }
-            points = smoothPolyline(points, line.closed, options.graph.smoothingPasses);
+            points = smoothPolyline(points, line.closed, options.graph.smoothingLength * spacing);
             if (options.graph.resampleSpacing > 0.0) {
                 points = resamplePolyline(points, line.closed,
                                           options.graph.resampleSpacing * spacing);

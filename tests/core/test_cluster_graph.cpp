@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -124,6 +125,39 @@ TEST(ClusterGraph, GapInARingIsReconnected)
     ASSERT_EQ(r.graph.network.lines.size(), 1u);
     EXPECT_TRUE(r.graph.network.lines[0].closed);
     EXPECT_EQ(r.graph.counts.freeEnds, 0);
+}
+
+TEST(ClusterGraph, FacingEndsAcrossALongGapAreJoined)
+{
+    // A straight band broken for 20 spacings (as noise leaves a shallow crease): beyond the
+    // reconnection radius, but the two ends face each other.
+    const PointMatrix P = band(45.0, [](double x, double y) {
+        return std::abs(y) < 1.0 && std::abs(x) < 42.0 && std::abs(x) > 9.0;
+    }, 8);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.lines.size(), 1u);
+    const Polyline& line = r.graph.network.lines[0];
+    EXPECT_NEAR(std::abs(line.points(0, 0)), 41.0, 2.0);
+    EXPECT_NEAR(std::abs(line.points(line.points.rows() - 1, 0)), 41.0, 2.0);
+    EXPECT_LT(line.points.col(1).cwiseAbs().maxCoeff(), 1.5) << "straight across the gap";
+}
+
+TEST(ClusterGraph, EndsHeadingForOneCornerMeetThere)
+{
+    // Two arms of an L whose last 8 spacings before the corner (0, 0) left no candidates.
+    const PointMatrix P = band(45.0, [](double x, double y) {
+        const bool horizontal = std::abs(y) < 1.0 && x > 8.0 && x < 40.0;
+        const bool vertical = std::abs(x) < 1.0 && y > 8.0 && y < 40.0;
+        return horizontal || vertical;
+    }, 9);
+    const GraphRun r = runGraph(P);
+    ASSERT_EQ(r.graph.network.lines.size(), 1u);
+    const Polyline& line = r.graph.network.lines[0];
+    double closest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+        closest = std::min(closest, line.points.row(i).norm());
+    }
+    EXPECT_LT(closest, 2.0) << "the line turns at the corner, not across it";
 }
 
 TEST(ClusterGraph, ShortSpurIsPrunedLongBranchIsKept)
