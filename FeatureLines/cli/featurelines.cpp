@@ -9,13 +9,16 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "FeatureLines/CloudIO.h"
 #include "FeatureLines/Curvature.h"
+#include "FeatureLines/Extraction.h"
 #include "FeatureLines/HistogramThreshold.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
@@ -258,6 +261,169 @@ int runThreshold(const Arguments& a)
     return 0;
 }
 
+// ---- extract ------------------------------------------------------------------------------
+
+/// One of the words in `allowed` (the option's value), or a UsageError listing them.
+int choice(const Arguments& a, const std::string& name, const std::vector<std::string>& allowed,
+           int fallback)
+{
+    if (!a.has(name)) {
+        return fallback;
+    }
+    const std::string value = a.text(name);
+    for (std::size_t i = 0; i < allowed.size(); ++i) {
+        if (allowed[i] == value) {
+            return static_cast<int>(i);
+        }
+    }
+    std::string list;
+    for (const std::string& w : allowed) {
+        list += (list.empty() ? "" : ", ") + w;
+    }
+    throw UsageError(name + " must be one of " + list + ", got '" + value + "'");
+}
+
+/// "0.3,0.05" -> {0.3, 0.05}: finite, not negative.
+std::vector<double> thresholdList(const std::string& text)
+{
+    std::vector<double> values;
+    std::stringstream words(text);
+    std::string word;
+    while (std::getline(words, word, ',')) {
+        const double v = Arguments::parseNumber("--thresholds", word);
+        if (v < 0.0) {
+            throw UsageError("--thresholds must not be negative, got " + word);
+        }
+        values.push_back(v);
+    }
+    if (values.empty()) {
+        throw UsageError("--thresholds needs at least one value, e.g. --thresholds 0.3,0.05");
+    }
+    return values;
+}
+
+ExtractionOptions extractionOptions(const Arguments& a)
+{
+    ExtractionOptions o;
+    o.neighbours.k = neighbourCount(a);
+    o.neighbours.threads = threadCount(a);
+    o.sharpEdges = !a.has("--no-sharp");
+    o.smoothEdges = !a.has("--no-smooth");
+    o.sharp.includeBoundary = !a.has("--no-boundary");
+    o.smooth.smoothing = static_cast<SmoothingMode>(
+        choice(a, "--smoothing", {"automatic", "always", "never"}, 0));
+    o.smooth.smoothingOptions.iterations = static_cast<int>(
+        a.integer("--smooth", o.smooth.smoothingOptions.iterations, 0, 1000));
+    o.smooth.histogram.bins = static_cast<int>(a.integer("--bins", o.smooth.histogram.bins, 2, 1000000));
+    if (a.has("--outliers")) {
+        o.smooth.histogram.outlierPercent = a.number("--outliers", 0.0, 0.0, 100.0, false);
+    }
+    o.thresholdMode = static_cast<ThresholdMode>(
+        choice(a, "--threshold-mode", {"automatic", "first", "explicit"}, 0));
+    if (a.has("--thresholds")) {
+        if (a.has("--threshold-mode") && o.thresholdMode != ThresholdMode::Explicit) {
+            throw UsageError("--thresholds goes with --threshold-mode explicit");
+        }
+        o.thresholdMode = ThresholdMode::Explicit;
+        o.thresholds = thresholdList(a.text("--thresholds"));
+    }
+    else if (o.thresholdMode == ThresholdMode::Explicit) {
+        throw UsageError("--threshold-mode explicit needs --thresholds T1,T2,...");
+    }
+    return o;
+}
+
+std::string pointsJson(const PointMatrix& P)
+{
+    std::string out = "[";
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        out += (i ? ", [" : "[") + json::number(P(i, 0)) + ", " + json::number(P(i, 1)) + ", " +
+               json::number(P(i, 2)) + "]";
+    }
+    return out + "]";
+}
+
+int runExtract(const Arguments& a)
+{
+    const std::string input = inputPath(a);
+    if (!a.has("--output")) {
+        throw UsageError("no output file given (-o LINES.json)");
+    }
+    const std::string output = a.text("--output");
+    const ExtractionOptions options = extractionOptions(a);
+    const PointMatrix cloud = readCloud(input);
+    const ExtractionResult r = extractFeatureLines(cloud, options);
+
+    using namespace json;
+    std::string lines = "[";
+    for (std::size_t i = 0; i < r.lines.size(); ++i) {
+        const FeatureLine& l = r.lines[i];
+        Object line;
+        line.add("type", string(lineTypeName(l.type)))
+            .add("closed", l.closed ? "true" : "false")
+            .add("start_junction", number(static_cast<long>(l.startJunction)))
+            .add("end_junction", number(static_cast<long>(l.endJunction)));
+        if (l.type == LineType::Smooth) {
+            line.add("region", number(static_cast<long>(l.region)))
+                .add("threshold", number(l.threshold));
+        }
+        line.add("points", pointsJson(l.points));
+        lines += (i ? ",\n  " : "\n  ") + line.str();
+    }
+    lines += "\n]";
+    std::string regions = "[";
+    for (std::size_t i = 0; i < r.regions.size(); ++i) {
+        const RegionReport& rr = r.regions[i];
+        Object region;
+        region.add("region", number(static_cast<long>(rr.region)))
+            .add("points", number(static_cast<long>(rr.points)))
+            .add("noise", number(rr.noise))
+            .add("smoothed", rr.smoothed ? "true" : "false")
+            .add("thresholds", array(rr.thresholds));
+        regions += (i ? ", " : "") + region.str();
+    }
+    regions += "]";
+    Object result;
+    result.add("input", string(input))
+        .add("points", number(static_cast<long>(cloud.rows())))
+        .add("spacing", number(r.spacing))
+        .add("lines", lines)
+        .add("junctions", pointsJson(r.junctions))
+        .add("regions", regions);
+    std::ofstream out(output);
+    out << result.str() << "\n";
+    if (!out) {
+        throw std::invalid_argument(output + ": writing the file failed");
+    }
+
+    if (a.has("--labels")) {
+        const std::string file = a.text("--labels");
+        std::ofstream labels(file);
+        labels << "# region patch label curvature (label: 0 low, 1 inner, 2 border, 3 noisy, "
+                  "255 outside every region)\n"
+               << std::setprecision(9);
+        for (std::size_t i = 0; i < r.region.size(); ++i) {
+            labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i])
+                   << ' ' << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
+        }
+        if (!labels) {
+            throw std::invalid_argument(file + ": writing the file failed");
+        }
+    }
+    int closed = 0;
+    for (const FeatureLine& l : r.lines) {
+        closed += l.closed ? 1 : 0;
+    }
+    std::cout << "lines: " << r.lines.size() << " (sharp " << r.countLines(LineType::Sharp)
+              << ", smooth " << r.countLines(LineType::Smooth) << ", boundary "
+              << r.countLines(LineType::Boundary) << "), closed " << closed << ", junctions "
+              << r.junctions.rows() << ", regions " << r.regions.size() << "\n";
+    if (r.lines.empty()) {
+        std::cout << "no feature lines: the cloud has no sharp edge, boundary or curvature valley\n";
+    }
+    return 0;
+}
+
 // ---- the table ----------------------------------------------------------------------------
 
 const std::vector<Command>& commands()
@@ -297,6 +463,31 @@ const std::vector<Command>& commands()
           smoothOption(),
           threadsOption()},
          runThreshold},
+        {"extract",
+         "closed feature lines: sharp edges, smooth edges (fillet borders) and boundary",
+         "INPUT -o LINES.json [--labels FILE] [--thresholds T1,T2 | --threshold-mode M] "
+         "[--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N]",
+         {{"--output", "FILE", "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
+                               "\"points\"}], \"junctions\", \"regions\" (thresholds used)}",
+           "-o"},
+          {"--labels", "FILE",
+           "also write per input point: smooth region, patch, Sec. 3 label, curvature"},
+          {"--threshold-mode", "M",
+           "automatic (every significant valley per region), first (the first threshold only), "
+           "explicit (--thresholds); default automatic"},
+          {"--thresholds", "T1,T2", "explicit curvature thresholds (1/length) for every region"},
+          {"--smoothing", "M",
+           "automatic (when a region is noisy), always or never (Sec. 2.4; default automatic)"},
+          {"--smooth", "N", "Taubin passes when a region is smoothed (default 20)"},
+          {"--bins", "L", "start resolution L_start, 2 to 1000000 (default 50, Sec. 2.2)"},
+          {"--outliers", "PCT",
+           "drop this percentage of the highest curvatures (default: 1 in noisy regions, else 0)"},
+          {"--no-sharp", "", "no sharp edges (the whole cloud is one smooth region)"},
+          {"--no-smooth", "", "no smooth edges"},
+          {"--no-boundary", "", "no boundary lines of an open cloud"},
+          kOption(),
+          threadsOption()},
+         runExtract},
     };
     return table;
 }

@@ -23,6 +23,22 @@ plane() {
     }'
 }
 
+# cube EDGE SPACING: the surface of the cube [0, EDGE]^3, a jittered grid of cell centres on each
+# face (no point on an edge): 12 sharp edges meeting at 8 corners, flat faces.
+cube() {
+    awk -v e="$1" -v h="$2" 'BEGIN {
+        m = int(e / h);
+        for (f = 0; f < 6; f++) for (i = 0; i < m; i++) for (k = 0; k < m; k++) {
+            u = (i + 0.5 + 0.2 * sin(i * 12.9898 + k * 78.233 + f)) * e / m;
+            v = (k + 0.5 + 0.2 * sin(i * 39.3468 + k * 11.135 + f)) * e / m;
+            w = (f % 2) * e; a = int(f / 2);
+            if (a == 0) printf "%.12f %.12f %.12f\n", w, u, v;
+            else if (a == 1) printf "%.12f %.12f %.12f\n", u, w, v;
+            else printf "%.12f %.12f %.12f\n", u, v, w;
+        }
+    }'
+}
+
 # fail MESSAGE: report a failed check (the script goes on, and exits 1 at the end).
 failures=0
 fail() {

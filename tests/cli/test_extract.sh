@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# featurelines extract as a user runs it: a cube gives its 12 sharp edges meeting at 8 corners
+# in the JSON lines file, the labels file has one line per input point, a sphere gives no line
+# and says so, and bad calls exit 2 (usage) or 1 (input) with a reason.
+# Usage: test_extract.sh FEATURELINES SCRATCH
+set -u
+bin=${1:?usage: test_extract.sh FEATURELINES SCRATCH}
+work=${2:?usage: test_extract.sh FEATURELINES SCRATCH}/extract
+. "$(dirname "$0")/clouds.sh"
+mkdir -p "$work" || exit 1
+py=/usr/bin/python3
+
+cube 10 0.25 > "$work/cube.xyz"
+points=$(wc -l < "$work/cube.xyz")
+"$bin" extract "$work/cube.xyz" -o "$work/cube.json" --labels "$work/cube-labels.txt" \
+    > "$work/cube.out" || fail "extract on the cube exited $?"
+grep -q "sharp 12" "$work/cube.out" || fail "cube summary: $(cat "$work/cube.out")"
+$py - "$work/cube.json" <<'PY' || fail "cube JSON: see above"
+import json, sys
+d = json.load(open(sys.argv[1]))
+sharp = [l for l in d["lines"] if l["type"] == "sharp"]
+assert len(sharp) == 12, "%d sharp lines" % len(sharp)
+assert len(d["junctions"]) == 8, "%d junctions" % len(d["junctions"])
+for l in sharp:
+    assert l["start_junction"] >= 0 and l["end_junction"] >= 0, "a sharp line with a free end"
+    # every vertex lies on a cube edge: two of its coordinates are 0 or 10 (within 0.5)
+    for p in l["points"]:
+        near = sum(1 for c in p if min(abs(c), abs(c - 10)) < 0.5)
+        assert near >= 2, "vertex %s is on no cube edge" % p
+assert len(d["regions"]) == 6, "%d smooth regions, expected the 6 faces" % len(d["regions"])
+PY
+labels=$(grep -vc '^#' "$work/cube-labels.txt")
+[ "$labels" -eq "$points" ] || fail "labels file has $labels lines for $points points"
+
+sphere 3 4000 0 0 0 > "$work/sphere.xyz"
+"$bin" extract "$work/sphere.xyz" -o "$work/sphere.json" > "$work/sphere.out" \
+    || fail "extract on the sphere exited $?"
+grep -q "no feature lines" "$work/sphere.out" || fail "sphere summary: $(cat "$work/sphere.out")"
+$py -c "import json,sys; assert json.load(open(sys.argv[1]))['lines'] == []" "$work/sphere.json" \
+    || fail "sphere JSON has lines"
+
+# expect CODE TEXT ARGS...: the call exits CODE and its one-line message contains TEXT.
+expect() {
+    local code=$1 text=$2; shift 2
+    "$bin" "$@" > /dev/null 2> "$work/err.txt"
+    local got=$?
+    [ "$got" -eq "$code" ] || fail "featurelines $* exited $got, expected $code"
+    grep -q -- "$text" "$work/err.txt" || fail "featurelines $*: message '$(cat "$work/err.txt")' lacks '$text'"
+    [ "$(wc -l < "$work/err.txt")" -eq 1 ] || fail "featurelines $*: more than one line on stderr"
+}
+expect 2 "no output file" extract "$work/cube.xyz"
+expect 2 "no INPUT" extract -o "$work/x.json"
+expect 2 "--thresholds" extract "$work/cube.xyz" -o "$work/x.json" --thresholds 0.1,abc
+expect 2 "--thresholds" extract "$work/cube.xyz" -o "$work/x.json" --thresholds -0.1
+expect 2 "explicit needs --thresholds" extract "$work/cube.xyz" -o "$work/x.json" --threshold-mode explicit
+expect 2 "--smoothing must be one of" extract "$work/cube.xyz" -o "$work/x.json" --smoothing sometimes
+expect 2 "--k" extract "$work/cube.xyz" -o "$work/x.json" --k 2
+expect 1 "missing.xyz" extract "$work/missing.xyz" -o "$work/x.json"
+head -n 10 "$work/cube.xyz" > "$work/tiny.xyz"
+expect 1 "at least 17" extract "$work/tiny.xyz" -o "$work/x.json"
+expect 1 "x.json" extract "$work/cube.xyz" -o "$work/no-such-folder/x.json"
+finish
