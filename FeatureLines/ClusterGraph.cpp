@@ -937,6 +937,8 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
         result.counts.reconnections += joinFacingEnds(graph, options);
         result.counts.reconnections += joinConvergingEnds(graph, options, nodeLabel);
+        // A join at a corner can leave the tip of a third line there as a spur.
+        result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
     }
     result.counts.bubbles = removeBubbles(graph, options.maxBubbleLength * spacing);
     result.counts.mergedJunctions =

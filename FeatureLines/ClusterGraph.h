@@ -68,8 +68,9 @@ struct ClusterGraphOptions
     double maxEdgeLength = 4.0;
     /// Branches from a junction to a free end shorter than this are cut (G_pruned_branches):
     /// the tree of a band several nodes wide grows short spurs across it. A band's spurs are
-    /// at most its width plus one node spacing, about 4.
-    double minBranchLength = 5.0;
+    /// at most its width plus one node spacing, about 4; where three bands meet at a corner,
+    /// up to 5-6 (at 5, 3 of 30 seeded cubes kept one; at 6, none of them).
+    double minBranchLength = 6.0;
     /// A free end is joined to the nearest node ahead of it within this distance
     /// (reconnection), so lines close or end on other lines. It must exceed
     /// minBranchLength + maxEdgeLength: the spanning tree breaks every cycle of the feature
@@ -93,7 +94,7 @@ struct ClusterGraphOptions
     /// than this (and so is a loop shorter than this leaving a junction and returning to it):
     /// where a band is two nodes wide the tree can run two parallel chains, which the
     /// reconnection joins into a bubble. Three times minBranchLength.
-    double maxBubbleLength = 15.0;
+    double maxBubbleLength = 18.0;
     /// Junctions joined by a chain shorter than this become one junction: where three bands
     /// meet the tree often forks twice, a node or two apart.
     double junctionMergeLength = 3.0;
