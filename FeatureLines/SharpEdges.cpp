@@ -374,6 +374,62 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
                                         isJunction[v] != 0);
         }
     }
+    // Where a sharp line meets the boundary, the junction node is often a sharp node a few
+    // spacings short of the rim: it slides along its crease, away from its sharp lines, to
+    // the last boundary point lying on the crease (within a spacing of it) near the junction.
+    const double reach = options.fitRadius * spacing;
+    for (std::size_t j = 0; j < graph.junctionNodes.size(); ++j) {
+        const int v = graph.junctionNodes[j];
+        Placement& p = placement[v];
+        if (p.kind != Placement::Line) {
+            continue;
+        }
+        const Eigen::Vector3d centre = graph.nodes.row(v).transpose();
+        Eigen::Vector3d outwards = Eigen::Vector3d::Zero();
+        std::vector<int> rimNodes{v}; // the junction may be a boundary node itself
+        for (std::size_t l = 0; l < graph.lineNodes.size(); ++l) {
+            const std::vector<int>& nodes = graph.lineNodes[l];
+            const Polyline& line = graph.network.lines[l];
+            if (line.closed || nodes.size() < 2) {
+                continue;
+            }
+            for (int side = 0; side < 2; ++side) {
+                if ((side == 0 ? line.startJunction : line.endJunction) != static_cast<int>(j)) {
+                    continue;
+                }
+                for (std::size_t i = 1; i < nodes.size(); ++i) {
+                    const int u = nodes[side == 0 ? i : nodes.size() - 1 - i];
+                    if ((graph.nodes.row(u).transpose() - centre).norm() > reach) {
+                        break;
+                    }
+                    if (line.label == boundaryLineLabel) {
+                        rimNodes.push_back(u);
+                    }
+                    else {
+                        outwards += centre - graph.nodes.row(u).transpose();
+                    }
+                }
+            }
+        }
+        if (rimNodes.size() == 1 || outwards.norm() <= 0.0) {
+            continue;
+        }
+        const Eigen::Vector3d d = p.direction.dot(outwards) >= 0.0 ? p.direction : -p.direction;
+        double farthest = -std::numeric_limits<double>::infinity();
+        for (int u : rimNodes) {
+            for (int i : nodePoints[u]) {
+                const Eigen::Vector3d x = P.row(i).transpose() - p.point;
+                const double t = x.dot(d);
+                if ((x - t * d).norm() <= spacing) {
+                    farthest = std::max(farthest, t);
+                }
+            }
+        }
+        if (std::isfinite(farthest)) {
+            p.kind = Placement::Corner;
+            p.point += farthest * d;
+        }
+    }
     auto placed = [&](int v) {
         return placement[v].project(graph.nodes.row(v).transpose());
     };
