@@ -52,8 +52,9 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
             std::to_string(N.size()) + " neighbourhoods)");
     }
     if (!(options.minGapAngle > 0.0 && options.minGapAngle < 360.0)) {
-        throw std::invalid_argument("boundary: the gap angle must be between 0 and 360 degrees, not " +
-                                    std::to_string(options.minGapAngle));
+        throw std::invalid_argument(
+            "boundary: the gap angle must be between 0 and 360 degrees, not " +
+            std::to_string(options.minGapAngle));
     }
     const int k = N.k();
     const double minGap = options.minGapAngle * pi / 180.0;
@@ -68,8 +69,8 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
         for (Eigen::Index i = 0; i < n; ++i) {
             // A frame of the tangent plane.
             const Eigen::Vector3d normal = normals.row(i).transpose();
-            const Eigen::Vector3d helper = std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX()
-                                                                       : Eigen::Vector3d::UnitY();
+            const Eigen::Vector3d helper =
+                std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
             const Eigen::Vector3d u = normal.cross(helper).normalized();
             const Eigen::Vector3d v = normal.cross(u);
             const double tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
@@ -84,8 +85,8 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
                 ys[j] = dx * v.x() + dy * v.y() + dz * v.z();
                 if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
                     sectors |= 1u << octant(xs[j], ys[j]);
-                    turned |= 1u << octant(cos22 * xs[j] + sin22 * ys[j],
-                                           cos22 * ys[j] - sin22 * xs[j]);
+                    turned |=
+                        1u << octant(cos22 * xs[j] + sin22 * ys[j], cos22 * ys[j] - sin22 * xs[j]);
                     ++count;
                 }
             }
@@ -111,14 +112,12 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
                 const int to = order[(a + 1) % count].second;
                 const double dot = xs[from] * xs[to] + ys[from] * ys[to];
                 const double cross = xs[from] * ys[to] - ys[from] * xs[to];
-                const double cosine =
-                    dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
-                                    (xs[to] * xs[to] + ys[to] * ys[to]));
+                const double cosine = dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
+                                                      (xs[to] * xs[to] + ys[to] * ys[to]));
                 if (cross > 0.0) {
                     // The gap is below 180 degrees: acos(cosine).
                     wide = minGap < pi && cosine < cosMinGap;
-                }
-                else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
+                } else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
                     // At least 180 degrees: 2 pi - acos(cosine) (all the circle when the last
                     // direction comes back onto the first).
                     wide = minGap <= pi || cosine > cosMinGap;
@@ -130,8 +129,8 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
     return boundary;
 }
 
-Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals,
-                         const Neighbourhoods& N, double spacing, const BoundaryOptions& options)
+Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                         double spacing, const BoundaryOptions& options)
 {
     if (!(spacing > 0.0) || !std::isfinite(spacing)) {
         throw std::invalid_argument("boundary: the point spacing must be a positive number");

@@ -48,8 +48,7 @@ struct Boundary
 /// point a candidate cluster of its own). A closed surface gives an empty network.
 ///   spacing  the cloud's mean point spacing, see meanSpacing()
 /// Throws std::invalid_argument for mismatched sizes or a spacing that is not positive.
-Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals,
-                         const Neighbourhoods& N, double spacing,
-                         const BoundaryOptions& options = {});
+Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                         double spacing, const BoundaryOptions& options = {});
 
 } // namespace featurelines

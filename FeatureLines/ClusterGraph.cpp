@@ -24,7 +24,10 @@ constexpr double pi = 3.14159265358979323846;
 class DisjointSets
 {
 public:
-    explicit DisjointSets(int size) : parent_(size) { std::iota(parent_.begin(), parent_.end(), 0); }
+    explicit DisjointSets(int size) : parent_(size)
+    {
+        std::iota(parent_.begin(), parent_.end(), 0);
+    }
 
     int find(int a)
     {
@@ -60,7 +63,8 @@ private:
 class NodeGrid
 {
 public:
-    NodeGrid(const std::vector<Eigen::Vector3d>& centres, double cell) : centres_(centres), cell_(cell)
+    NodeGrid(const std::vector<Eigen::Vector3d>& centres, double cell)
+        : centres_(centres), cell_(cell)
     {
         for (int i = 0; i < static_cast<int>(centres.size()); ++i) {
             cells_[key(cellOf(centres[i]))].push_back(i);
@@ -68,8 +72,7 @@ public:
     }
 
     /// Calls f(i) for every centre i within `radius` (<= the cell size) of x.
-    template <class F>
-    void forEachWithin(const Eigen::Vector3d& x, double radius, F f) const
+    template <class F> void forEachWithin(const Eigen::Vector3d& x, double radius, F f) const
     {
         const Eigen::Vector3i c = cellOf(x);
         const double r2 = radius * radius;
@@ -411,8 +414,7 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>
             labels.push_back(labels[p.leaf]);
             g.addEdge(p.leaf, node);
             g.addEdge(node, p.target);
-        }
-        else {
+        } else {
             g.addEdge(p.leaf, p.target);
         }
         ++added;
@@ -477,8 +479,8 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
 }
 
 /// Free ends still left whose lines, continued straight ahead, meet within twice
-/// reconnectRadius are joined through a new node where they meet: the corner of two creases whose last few
-/// spacings (and the faint edges between them, as at the triangles of a chamfered box's
+/// reconnectRadius are joined through a new node where they meet: the corner of two creases whose
+/// last few spacings (and the faint edges between them, as at the triangles of a chamfered box's
 /// corners) left no candidates. Further free ends heading for that node join it too.
 int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels)
 {
@@ -706,8 +708,8 @@ PointMatrix smoothPolyline(const PointMatrix& points, bool closed, double length
             if (!closed && (i == 0 || i == m - 1)) {
                 continue;
             }
-            smoothed.row(i) = 0.25 * old.row((i + m - 1) % m) + 0.5 * old.row(i) +
-                              0.25 * old.row((i + 1) % m);
+            smoothed.row(i) =
+                0.25 * old.row((i + m - 1) % m) + 0.5 * old.row(i) + 0.25 * old.row((i + 1) % m);
         }
     }
     return smoothed;
@@ -943,9 +945,8 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
     result.counts.bubbles = removeBubbles(graph, options.maxBubbleLength * spacing);
     result.counts.mergedJunctions =
         mergeCloseJunctions(graph, options.junctionMergeLength * spacing);
-    result.counts.droppedComponents =
-        dropShortComponents(graph, options.minComponentLength * spacing,
-                            options.minOpenComponentLength * spacing);
+    result.counts.droppedComponents = dropShortComponents(
+        graph, options.minComponentLength * spacing, options.minOpenComponentLength * spacing);
 
     // The joins of converging ends may have added nodes.
     const int finalCount = graph.size();

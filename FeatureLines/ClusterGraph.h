@@ -130,7 +130,7 @@ struct ClusterGraphCounts
     int bubbles = 0;        ///< parallel chains dropped
     int mergedJunctions = 0;
     int droppedComponents = 0;
-    int freeEnds = 0;       ///< line ends left on no other line
+    int freeEnds = 0; ///< line ends left on no other line
 };
 
 struct ClusterGraph

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include <omp.h>
 
@@ -49,8 +49,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     if (N.size() != n || normals.rows() != n) {
         throw std::invalid_argument(
             "first-order segmentation: the normals and neighbourhoods must have one row per "
-            "point (" + std::to_string(n) + " points, " + std::to_string(normals.rows()) +
-            " normals, " + std::to_string(N.size()) + " neighbourhoods)");
+            "point (" +
+            std::to_string(n) + " points, " + std::to_string(normals.rows()) + " normals, " +
+            std::to_string(N.size()) + " neighbourhoods)");
     }
     if (!(spacing > 0.0) || !std::isfinite(spacing)) {
         throw std::invalid_argument("first-order segmentation: the point spacing must be a "
@@ -140,10 +141,10 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
 
     std::vector<char> grows(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {
-        grows[i] = result.spread(i) <= options.growAngle ||
-                           result.planarityExcess(i) <= result.minExcess
-                       ? 1
-                       : 0;
+        grows[i] =
+            result.spread(i) <= options.growAngle || result.planarityExcess(i) <= result.minExcess
+                ? 1
+                : 0;
     }
 
     // Growing points reached from one another form one cluster: the connected components of
@@ -192,8 +193,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     result.cluster.assign(n, -1);
     std::vector<int> idOfRoot(n, -1);
     for (Eigen::Index i = 0; i < n; ++i) {
-        const int anchor = grows[i] ? static_cast<int>(i) : owner[i] >= 0 ? owner[i]
-                                                                            : static_cast<int>(i);
+        const int anchor = grows[i]        ? static_cast<int>(i)
+                           : owner[i] >= 0 ? owner[i]
+                                           : static_cast<int>(i);
         const int root = findRoot(parent, anchor);
         if (idOfRoot[root] < 0) {
             idOfRoot[root] = static_cast<int>(result.clusterSize.size());

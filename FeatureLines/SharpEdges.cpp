@@ -70,7 +70,12 @@ Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
 /// Where a node of the graph goes: onto a crease line, onto a corner, or nowhere.
 struct Placement
 {
-    enum Kind { None, Line, Corner } kind = None;
+    enum Kind
+    {
+        None,
+        Line,
+        Corner
+    } kind = None;
     Eigen::Vector3d point = Eigen::Vector3d::Zero(); // on the line, or the corner
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();
 
@@ -132,9 +137,8 @@ public:
                         if (std::abs(m.determinant()) < sinMinAngle_ * sinMinAngle_) {
                             continue;
                         }
-                        const Eigen::Vector3d corner =
-                            m.fullPivLu().solve(Eigen::Vector3d(planes[a].offset, planes[b].offset,
-                                                                planes[c].offset));
+                        const Eigen::Vector3d corner = m.fullPivLu().solve(
+                            Eigen::Vector3d(planes[a].offset, planes[b].offset, planes[c].offset));
                         const double shift = (corner - centre).norm();
                         if (shift < bestShift) {
                             bestShift = shift;
@@ -292,9 +296,11 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     if (!(spacing > 0.0) || !std::isfinite(spacing)) {
         throw std::invalid_argument("sharp edges: the point spacing must be a positive number");
     }
-    if (!(options.fitRadius > 0.0) || options.minFitPoints < 3 || !(options.resampleSpacing >= 0.0)) {
-        throw std::invalid_argument("sharp edges: the fit radius must be positive, the fit needs "
-                                    "at least 3 points and the resampling step must not be negative");
+    if (!(options.fitRadius > 0.0) || options.minFitPoints < 3 ||
+        !(options.resampleSpacing >= 0.0)) {
+        throw std::invalid_argument(
+            "sharp edges: the fit radius must be positive, the fit needs "
+            "at least 3 points and the resampling step must not be negative");
     }
     requireSurface(P, spacing);
 
@@ -325,7 +331,8 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     ClusterGraphOptions graphOptions = options.graph;
     graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
-    const ClusterGraph graph = buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label);
+    const ClusterGraph graph =
+        buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label);
     result.counts = graph.counts;
 
     // The points of every node, to start the search for the faces around it.
@@ -370,8 +377,8 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     CreasePlacer placer(P, N, result, spacing, options);
     for (int v = 0; v < nodeCount; ++v) {
         if (needed[v] || isJunction[v]) {
-            placement[v] = placer.place(v, nodePoints[v], graph.nodes.row(v).transpose(),
-                                        isJunction[v] != 0);
+            placement[v] =
+                placer.place(v, nodePoints[v], graph.nodes.row(v).transpose(), isJunction[v] != 0);
         }
     }
     // Where a sharp line meets the boundary, the junction node is often a sharp node a few
@@ -404,8 +411,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
                     }
                     if (line.label == boundaryLineLabel) {
                         rimNodes.push_back(u);
-                    }
-                    else {
+                    } else {
                         outwards += centre - graph.nodes.row(u).transpose();
                     }
                 }
@@ -430,9 +436,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
             p.point += farthest * d;
         }
     }
-    auto placed = [&](int v) {
-        return placement[v].project(graph.nodes.row(v).transpose());
-    };
+    auto placed = [&](int v) { return placement[v].project(graph.nodes.row(v).transpose()); };
 
     result.network.junctions.resize(graph.network.junctions.rows(), 3);
     for (std::size_t j = 0; j < graph.junctionNodes.size(); ++j) {
@@ -455,8 +459,8 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
             }
             points = smoothPolyline(points, line.closed, options.graph.smoothingLength * spacing);
             if (options.graph.resampleSpacing > 0.0) {
-                points = resamplePolyline(points, line.closed,
-                                          options.graph.resampleSpacing * spacing);
+                points =
+                    resamplePolyline(points, line.closed, options.graph.resampleSpacing * spacing);
             }
             line.points = std::move(points);
             result.network.lines.push_back(std::move(line));

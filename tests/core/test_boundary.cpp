@@ -124,7 +124,8 @@ TEST(Boundary, OpenTubeHasOneLoopPerRim)
     for (const Polyline& loop : r.boundary.network.lines) {
         EXPECT_TRUE(loop.closed);
         heights.push_back(loop.points.col(2).mean());
-        EXPECT_NEAR(loopLength(loop), 2.0 * 3.14159265358979 * radius, 0.1 * 2.0 * 3.14159 * radius);
+        EXPECT_NEAR(loopLength(loop), 2.0 * 3.14159265358979 * radius,
+                    0.1 * 2.0 * 3.14159 * radius);
     }
     std::sort(heights.begin(), heights.end());
     EXPECT_NEAR(heights[0], -height / 2, 1.0 * r.spacing);
@@ -150,7 +151,8 @@ TEST(Boundary, BadInputThrows)
     const shapes::Sample plane = shapes::plane(10.0, 1.0, 1);
     const Neighbourhoods N = nearestNeighbours(plane.points);
     const NormalEstimate normals = pcaNormals(plane.points, N);
-    EXPECT_THROW(boundaryPoints(plane.points, normals.normals.topRows(3), N), std::invalid_argument);
+    EXPECT_THROW(boundaryPoints(plane.points, normals.normals.topRows(3), N),
+                 std::invalid_argument);
     EXPECT_THROW(extractBoundary(plane.points, normals.normals, N, -1.0), std::invalid_argument);
     BoundaryOptions zero;
     zero.minGapAngle = 0.0;

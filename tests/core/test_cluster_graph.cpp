@@ -16,8 +16,7 @@ using namespace featurelines;
 namespace {
 
 /// Points on a jittered grid of unit spacing in the plane z = 0, kept where `inside` holds.
-template <class Inside>
-PointMatrix band(double extent, Inside inside, unsigned seed)
+template <class Inside> PointMatrix band(double extent, Inside inside, unsigned seed)
 {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> jitter(-0.2, 0.2);
@@ -100,9 +99,13 @@ TEST(ClusterGraph, SquareRingBandBecomesOneClosedLoopOnItsCentreLine)
 
 TEST(ClusterGraph, CrossMeetsAtOneJunction)
 {
-    const PointMatrix P = band(20.0, [](double x, double y) {
-        return (std::abs(x) < 1.5 && std::abs(y) < 18.0) || (std::abs(y) < 1.5 && std::abs(x) < 18.0);
-    }, 2);
+    const PointMatrix P = band(
+        20.0,
+        [](double x, double y) {
+            return (std::abs(x) < 1.5 && std::abs(y) < 18.0) ||
+                   (std::abs(y) < 1.5 && std::abs(x) < 18.0);
+        },
+        2);
     const GraphRun r = runGraph(P);
     ASSERT_EQ(r.graph.network.junctions.rows(), 1);
     EXPECT_LT(r.graph.network.junctions.row(0).norm(), 2.0) << "the junction is at the crossing";
@@ -118,9 +121,10 @@ TEST(ClusterGraph, CrossMeetsAtOneJunction)
 TEST(ClusterGraph, GapInARingIsReconnected)
 {
     // A gap of 5 spacings: wider than G_extended bridges, within the reconnection radius.
-    const PointMatrix P = band(18.0, [](double x, double y) {
-        return squareRing(x, y) && !(x > 10.0 && x < 15.5 && y > 0.0);
-    }, 3);
+    const PointMatrix P = band(
+        18.0,
+        [](double x, double y) { return squareRing(x, y) && !(x > 10.0 && x < 15.5 && y > 0.0); },
+        3);
     const GraphRun r = runGraph(P);
     ASSERT_EQ(r.graph.network.lines.size(), 1u);
     EXPECT_TRUE(r.graph.network.lines[0].closed);
@@ -131,9 +135,12 @@ TEST(ClusterGraph, FacingEndsAcrossALongGapAreJoined)
 {
     // A straight band broken for 20 spacings (as noise leaves a shallow crease): beyond the
     // reconnection radius, but the two ends face each other.
-    const PointMatrix P = band(45.0, [](double x, double y) {
-        return std::abs(y) < 1.0 && std::abs(x) < 42.0 && std::abs(x) > 9.0;
-    }, 8);
+    const PointMatrix P = band(
+        45.0,
+        [](double x, double y) {
+            return std::abs(y) < 1.0 && std::abs(x) < 42.0 && std::abs(x) > 9.0;
+        },
+        8);
     const GraphRun r = runGraph(P);
     ASSERT_EQ(r.graph.network.lines.size(), 1u);
     const Polyline& line = r.graph.network.lines[0];
@@ -145,11 +152,14 @@ TEST(ClusterGraph, FacingEndsAcrossALongGapAreJoined)
 TEST(ClusterGraph, EndsHeadingForOneCornerMeetThere)
 {
     // Two arms of an L whose last 8 spacings before the corner (0, 0) left no candidates.
-    const PointMatrix P = band(45.0, [](double x, double y) {
-        const bool horizontal = std::abs(y) < 1.0 && x > 8.0 && x < 40.0;
-        const bool vertical = std::abs(x) < 1.0 && y > 8.0 && y < 40.0;
-        return horizontal || vertical;
-    }, 9);
+    const PointMatrix P = band(
+        45.0,
+        [](double x, double y) {
+            const bool horizontal = std::abs(y) < 1.0 && x > 8.0 && x < 40.0;
+            const bool vertical = std::abs(x) < 1.0 && y > 8.0 && y < 40.0;
+            return horizontal || vertical;
+        },
+        9);
     const GraphRun r = runGraph(P);
     ASSERT_EQ(r.graph.network.lines.size(), 1u);
     const Polyline& line = r.graph.network.lines[0];
@@ -163,11 +173,14 @@ TEST(ClusterGraph, EndsHeadingForOneCornerMeetThere)
 TEST(ClusterGraph, ShortSpurIsPrunedLongBranchIsKept)
 {
     // A ring with a spur 3 spacings long (pruned) and an arm 12 long (a real line).
-    const PointMatrix P = band(30.0, [](double x, double y) {
-        const bool spur = std::abs(y) < 1.0 && x > 16.0 && x < 19.5;
-        const bool arm = std::abs(x) < 1.0 && y < -16.0 && y > -28.5;
-        return squareRing(x, y) || spur || arm;
-    }, 4);
+    const PointMatrix P = band(
+        30.0,
+        [](double x, double y) {
+            const bool spur = std::abs(y) < 1.0 && x > 16.0 && x < 19.5;
+            const bool arm = std::abs(x) < 1.0 && y < -16.0 && y > -28.5;
+            return squareRing(x, y) || spur || arm;
+        },
+        4);
     const GraphRun r = runGraph(P);
     EXPECT_GE(r.graph.counts.prunedBranches, 1);
     ASSERT_EQ(r.graph.network.junctions.rows(), 1) << "only the arm meets the ring";
@@ -177,12 +190,15 @@ TEST(ClusterGraph, ShortSpurIsPrunedLongBranchIsKept)
 
 TEST(ClusterGraph, SeparateRingsStaySeparateAndSpecksAreDropped)
 {
-    const PointMatrix P = band(60.0, [](double x, double y) {
-        const bool left = squareRing(x + 30.0, y);
-        const bool right = squareRing(x - 30.0, y);
-        const bool speck = std::abs(x) < 1.5 && std::abs(y - 40.0) < 1.5;
-        return left || right || speck;
-    }, 5);
+    const PointMatrix P = band(
+        60.0,
+        [](double x, double y) {
+            const bool left = squareRing(x + 30.0, y);
+            const bool right = squareRing(x - 30.0, y);
+            const bool speck = std::abs(x) < 1.5 && std::abs(y - 40.0) < 1.5;
+            return left || right || speck;
+        },
+        5);
     const GraphRun r = runGraph(P);
     ASSERT_EQ(r.graph.network.lines.size(), 2u);
     EXPECT_TRUE(r.graph.network.lines[0].closed);
@@ -195,9 +211,9 @@ TEST(ClusterGraph, ClustersWithoutCandidatesAreLeftOutAndLabelsCarryOver)
 {
     // Two rings; the right one's points belong to non-candidate clusters, the left one's to
     // candidates labelled 7.
-    const PointMatrix P = band(60.0, [](double x, double y) {
-        return squareRing(x + 30.0, y) || squareRing(x - 30.0, y);
-    }, 6);
+    const PointMatrix P = band(
+        60.0, [](double x, double y) { return squareRing(x + 30.0, y) || squareRing(x - 30.0, y); },
+        6);
     const Neighbourhoods N = nearestNeighbours(P);
     std::vector<int> cluster(P.rows());
     std::vector<char> candidate(P.rows());
@@ -237,7 +253,8 @@ TEST(ClusterGraph, ResamplingIsEvenAndKeepsTheEnds)
 
 TEST(ClusterGraph, BadInputThrows)
 {
-    const PointMatrix P = band(5.0, [](double, double) { return true; }, 7);
+    const PointMatrix P = band(
+        5.0, [](double, double) { return true; }, 7);
     const Neighbourhoods N = nearestNeighbours(P);
     const std::vector<char> candidate(P.rows(), 1);
     std::vector<int> cluster(P.rows(), 0);
@@ -250,7 +267,6 @@ TEST(ClusterGraph, BadInputThrows)
     EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, std::vector<int>(2, 0)),
                  std::invalid_argument);
     // Nothing marked as candidate: an empty network, no crash.
-    const ClusterGraph none =
-        buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 0), 1.0);
+    const ClusterGraph none = buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 0), 1.0);
     EXPECT_TRUE(none.network.lines.empty());
 }

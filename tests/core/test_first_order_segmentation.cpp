@@ -158,7 +158,7 @@ TEST(FirstOrderSegmentation, BadInputThrows)
                  std::invalid_argument);
     FirstOrderSegmentationOptions zeroAngle;
     zeroAngle.growAngle = 0.0;
-    EXPECT_THROW(segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing,
-                                  zeroAngle),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, zeroAngle),
+        std::invalid_argument);
 }

@@ -55,9 +55,9 @@ double distanceToPolyline(const Eigen::Vector3d& p, const Polyline& line)
     const Eigen::Index m = line.points.rows();
     const Eigen::Index segments = line.closed ? m : m - 1;
     for (Eigen::Index i = 0; i < segments; ++i) {
-        best = std::min(best, Segment{line.points.row(i).transpose(),
-                                      line.points.row((i + 1) % m).transpose()}
-                                  .distance(p));
+        best = std::min(
+            best, Segment{line.points.row(i).transpose(), line.points.row((i + 1) % m).transpose()}
+                      .distance(p));
     }
     return m == 1 ? (line.points.row(0).transpose() - p).norm() : best;
 }
@@ -305,8 +305,7 @@ TEST(SharpEdges, DegenerateInputIsRefused)
     const shapes::Sample plane = shapes::plane(10.0, 1.0, 1);
     const Neighbourhoods PN = nearestNeighbours(plane.points);
     const NormalEstimate PNormals = pcaNormals(plane.points, PN);
-    EXPECT_THROW(extractSharpEdges(plane.points, PNormals.normals, PN, 0.0),
-                 std::invalid_argument);
+    EXPECT_THROW(extractSharpEdges(plane.points, PNormals.normals, PN, 0.0), std::invalid_argument);
     EXPECT_THROW(extractSharpEdges(plane.points, PNormals.normals.topRows(5), PN, 1.0),
                  std::invalid_argument);
     // Fewer points than neighbours, or all points coinciding, are refused before this stage.
