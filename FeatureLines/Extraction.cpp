@@ -116,7 +116,7 @@ std::vector<double> regionThresholdList(const RegionGeometry& g, const Extractio
         report.decisions = automaticThresholds(g, options.smooth);
         for (const ThresholdDecision& d : report.decisions) {
             if (d.accepted) {
-                thresholds.push_back(d.result.threshold);
+                thresholds.push_back(d.applied);
             }
         }
         break;
@@ -291,7 +291,9 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
 
         std::vector<PointLabel> firstLabels;
         for (size_t level = 0; level < rr.thresholds.size(); ++level) {
-            const SmoothEdgeLevel edges = smoothEdgesAtThreshold(g, rr.thresholds[level], options.smooth);
+            // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the region.
+            const SmoothEdgeLevel edges = smoothEdgesAtThreshold(
+                g, rr.thresholds[level], options.smooth, {}, analysis.sharp.network.lines);
             const int offset = static_cast<int>(result.junctions.rows());
             for (const Polyline& line : edges.network.lines) {
                 FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);

@@ -3,10 +3,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 
 #include "FeatureLines/Normals.h"
 #include "FeatureLines/SmoothRegions.h"
@@ -71,26 +79,469 @@ double median(std::vector<double> v)
     return *mid;
 }
 
+/// The middle of the valley that starts at a threshold: Sec. 2.2 puts tau right after the peak
+/// b1 (the end of its run of k bins), where the valley starts; the valley ends where the
+/// histogram rises to the next peak: k bins holding twice the valley's b2 and at least
+/// minPeakPercent of the values (the least peak Sec. 2.2 may follow). Where no such rise
+/// follows (a noisy valley whose next level is a low plateau, or the top of the histogram),
+/// tau stays: there the lower peak's noise tail already reaches to the middle. The
+/// quadric fit blurs a curvature step symmetrically, so the middle of the values between the
+/// two levels crosses on the tangent line, while the valley's start can lie up to a
+/// neighbourhood radius off it, onto the flatter side (a clean plane's values are one spike
+/// at 0, and the valley starts one bin above it).
+double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
+{
+    const Histogram& h = t.histogram;
+    const int L = h.bins();
+    const int k = std::max(1, t.joinedBins);
+    if (L == 0 || !(h.binWidth > 0.0)) {
+        return t.threshold;
+    }
+    const int first = static_cast<int>(std::lround((t.threshold - h.minimum) / h.binWidth));
+    const double values = static_cast<double>(
+        std::accumulate(h.counts.begin(), h.counts.end(), 0L));
+    const double rise = std::max({2.0 * static_cast<double>(t.valleyCount),
+                                  minPeakPercent / 100.0 * values, 1.0});
+    double end = t.threshold;
+    for (int j = std::max(first, 0); j < L; ++j) {
+        const int last = std::min(L, j + k);
+        double count = 0.0;
+        for (int b = j; b < last; ++b) {
+            count += static_cast<double>(h.counts[b]);
+        }
+        if (count * k / (last - j) > rise) {
+            end = h.minimum + j * h.binWidth;
+            break;
+        }
+    }
+    return 0.5 * (t.threshold + std::max(end, t.threshold));
+}
+
+/// The share of the border points of a labelling (at most `samples` of them, evenly strided)
+/// that have a point of curvature at most `low` or above `high` within two fit radii
+/// (gathered over two hops of the neighbourhoods).
+double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& labels,
+                     int samples, double low, double high)
+{
+    std::vector<int> border;
+    for (size_t i = 0; i < labels.size(); ++i) {
+        if (labels[i] == PointLabel::Border) {
+            border.push_back(static_cast<int>(i));
+        }
+    }
+    if (border.empty() || (std::isinf(low) && std::isinf(high))) {
+        return 0.0;
+    }
+    const size_t stride =
+        samples > 0 ? std::max<size_t>(1, (border.size() + samples - 1) / samples) : 1;
+    const long count = static_cast<long>((border.size() + stride - 1) / stride);
+    const Neighbourhoods& N = g.neighbours;
+    long straddling = 0;
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : straddling)
+    for (long s = 0; s < count; ++s) {
+        const int p = border[static_cast<size_t>(s) * stride];
+        const double reach2 = 4.0 * N.squaredDistances(p, N.k() - 1);
+        bool outside = false;
+        for (int j = 0; j < N.k() && !outside; ++j) {
+            const int q = N.indices(p, j);
+            for (int l = -1; l < N.k() && !outside; ++l) {
+                const int r = l < 0 ? q : N.indices(q, l);
+                const double v = g.curvature[r];
+                outside = (v <= low || v > high) &&
+                          (g.points.row(r) - g.points.row(p)).squaredNorm() <= reach2;
+            }
+        }
+        straddling += outside ? 1 : 0;
+    }
+    return static_cast<double>(straddling) / static_cast<double>(count);
+}
+
+/// The largest patch of curvature level (low, high]: points with values in it whose whole
+/// 1-ring is in it too (the inner points of Sec. 3 for that level), connected through the
+/// 1-rings; returns its number of points.
+int largestPatch(const Eigen::VectorXd& curvature, double low, double high,
+                 const RingNeighbourhoods& ring)
+{
+    const Eigen::Index n = curvature.size();
+    auto inLevel = [&](int i) { return curvature[i] > low && curvature[i] <= high; };
+    std::vector<char> interior(static_cast<size_t>(n), 0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (!inLevel(static_cast<int>(i)) || ring.size(i) == 0) {
+            continue;
+        }
+        interior[i] = std::all_of(ring.begin(i), ring.end(i), inLevel);
+    }
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    std::vector<int> stack;
+    int largest = 0;
+    for (Eigen::Index s = 0; s < n; ++s) {
+        if (!interior[s] || seen[s]) {
+            continue;
+        }
+        seen[s] = 1;
+        stack.assign(1, static_cast<int>(s));
+        int size = 0;
+        while (!stack.empty()) {
+            const int p = stack.back();
+            stack.pop_back();
+            ++size;
+            for (const int* q = ring.begin(p); q != ring.end(p); ++q) {
+                if (interior[*q] && !seen[*q]) {
+                    seen[*q] = 1;
+                    stack.push_back(*q);
+                }
+            }
+        }
+        largest = std::max(largest, size);
+    }
+    return largest;
+}
+
+/// Normals flipped so that neighbours agree: breadth first over the neighbourhoods from the
+/// first point of every connected piece. A smooth region holds no crease, so neighbouring
+/// normals differ by far less than 90 degrees and the sign of their dot product is reliable.
+NormalMatrix orientedNormals(NormalMatrix normals, const Neighbourhoods& N)
+{
+    const Eigen::Index n = normals.rows();
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    std::vector<int> queue;
+    queue.reserve(static_cast<size_t>(n));
+    for (Eigen::Index s = 0; s < n; ++s) {
+        if (seen[s]) {
+            continue;
+        }
+        seen[s] = 1;
+        queue.assign(1, static_cast<int>(s));
+        for (size_t head = 0; head < queue.size(); ++head) {
+            const int p = queue[head];
+            for (int j = 0; j < N.k(); ++j) {
+                const int q = N.indices(p, j);
+                if (!seen[q]) {
+                    seen[q] = 1;
+                    if (normals.row(q).dot(normals.row(p)) < 0.0) {
+                        normals.row(q) *= -1.0;
+                    }
+                    queue.push_back(q);
+                }
+            }
+        }
+    }
+    return normals;
+}
+
+/// The region's curvature: the quadric fit of Sec. 2.1, then (smoothed regions) averaging
+/// passes. The averaging runs on the signed curvature over consistently oriented normals and
+/// the magnitude is taken last (unless signed values were asked for): averaging magnitudes
+/// would lift a flat face's noise, which has both signs, to a positive level.
+Eigen::VectorXd regionCurvature(const PointMatrix& P, const NormalMatrix& normals,
+                                const Neighbourhoods& N, int averagingPasses,
+                                const CurvatureOptions& options)
+{
+    if (averagingPasses == 0) {
+        return meanCurvature(P, normals, N, options);
+    }
+    CurvatureOptions signedOptions = options;
+    signedOptions.signedCurvature = true;
+    Eigen::VectorXd H = meanCurvature(P, orientedNormals(normals, N), N, signedOptions);
+    for (int pass = 0; pass < averagingPasses; ++pass) {
+        H = averageOverNeighbours(H, N);
+    }
+    return options.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs());
+}
+
+/// The noise floor of the curvature, per unit of estimated noise: a flat patch sampled as a
+/// scan (a jittered grid of unit spacing) with normal noise goes through the same smoothing,
+/// fit and averaging as the region; the spread of its curvature, divided by its estimated
+/// noise, is the curvature a flat face shows per unit of noise. Both scale linearly with the
+/// noise (every step is linear in the heights for noise small against the spacing), so the
+/// ratio holds for any noise level and spacing. Computed once per set of options.
+double curvatureNoisePerNoise(int k, bool smoothed, const SmoothEdgeOptions& options)
+{
+    const int averaging = smoothed ? options.curvatureAveragingPasses : 0;
+    const SmoothingOptions& so = options.smoothingOptions;
+    using Key = std::tuple<int, bool, int, double, double, int, int>;
+    const Key key{k, smoothed, so.iterations, so.lambda, so.mu, averaging, options.curvature.k};
+    static std::mutex mutex;
+    static std::map<Key, double> cache;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        auto it = cache.find(key);
+        if (it != cache.end()) {
+            return it->second;
+        }
+    }
+
+    const SyntheticNoiseOptions& sn = options.noiseFloor;
+    const int side = sn.patchSide;
+    std::mt19937 rng(sn.seed);
+    std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+    std::normal_distribution<double> height(0.0, sn.noise);
+    PointMatrix P(side * side, 3);
+    for (int j = 0; j < side; ++j) {
+        for (int i = 0; i < side; ++i) {
+            P.row(j * side + i) << i + jitter(rng), j + jitter(rng), height(rng);
+        }
+    }
+    NeighbourOptions no;
+    no.k = k;
+    const Neighbourhoods N = nearestNeighbours(P, no);
+    const double spacing = meanSpacing(N);
+    NormalMatrix normals = pcaNormals(P, N).normals;
+    const double noise = estimateNoise(P, normals, N, spacing);
+    if (smoothed) {
+        std::vector<int> all(static_cast<size_t>(P.rows()));
+        std::iota(all.begin(), all.end(), 0);
+        P = laplacianSmooth(P, N, all, so);
+        normals = pcaNormals(P, N).normals;
+    }
+    const Eigen::VectorXd H = regionCurvature(P, normals, N, averaging, options.curvature);
+    // Away from the patch's rim, where smoothing and fits are one-sided.
+    std::vector<double> interior;
+    const int margin = side / 4;
+    for (int j = margin; j < side - margin; ++j) {
+        for (int i = margin; i < side - margin; ++i) {
+            interior.push_back(std::abs(H[j * side + i]) * spacing);
+        }
+    }
+    // |H| of a flat face is folded normal noise: its median is 0.674 standard deviations.
+    const double perNoise = noise > 0.0 ? median(std::move(interior)) / 0.6745 / noise : 0.0;
+    std::lock_guard<std::mutex> lock(mutex);
+    cache[key] = perNoise;
+    return perNoise;
+}
+
+/// Direction of a line at one end (pointing out of the line), from the end vertex and the
+/// vertex about `length` back along it.
+Eigen::RowVector3d endDirection(const PointMatrix& V, bool atEnd, double length)
+{
+    const Eigen::Index n = V.rows();
+    const Eigen::Index tip = atEnd ? n - 1 : 0;
+    const Eigen::Index step = atEnd ? -1 : 1;
+    Eigen::Index back = tip;
+    double walked = 0.0;
+    while (back + step >= 0 && back + step < n && walked < length) {
+        walked += (V.row(back + step) - V.row(back)).norm();
+        back += step;
+    }
+    const Eigen::RowVector3d d = V.row(tip) - V.row(back);
+    const double norm = d.norm();
+    return norm > 0.0 ? Eigen::RowVector3d(d / norm) : Eigen::RowVector3d::Zero();
+}
+
+/// Closest point to p on the polylines; false when there is none.
+bool closestOnLines(const std::vector<Polyline>& lines, const Eigen::RowVector3d& p,
+                    Eigen::RowVector3d& closest)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const Polyline& line : lines) {
+        const Eigen::Index n = line.points.rows();
+        const Eigen::Index segments = line.closed ? n : n - 1;
+        if (n == 1) {
+            const double d = (line.points.row(0) - p).squaredNorm();
+            if (d < best) {
+                best = d;
+                closest = line.points.row(0);
+            }
+        }
+        for (Eigen::Index s = 0; s < segments; ++s) {
+            const Eigen::RowVector3d a = line.points.row(s);
+            const Eigen::RowVector3d ab = line.points.row((s + 1) % n) - a;
+            const double len2 = ab.squaredNorm();
+            const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+            const Eigen::RowVector3d q = a + t * ab;
+            const double d = (q - p).squaredNorm();
+            if (d < best) {
+                best = d;
+                closest = q;
+            }
+        }
+    }
+    return std::isfinite(best);
+}
+
 } // namespace
 
+std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
+                                 double reach, double maxAngleDegrees)
+{
+    std::vector<char> anchored(2 * network.lines.size(), 0);
+    if (anchors.empty() || !(reach > 0.0)) {
+        return anchored;
+    }
+    const double cosMax = std::cos(maxAngleDegrees * 3.14159265358979323846 / 180.0);
+    for (size_t l = 0; l < network.lines.size(); ++l) {
+        Polyline& line = network.lines[l];
+        if (line.closed || line.points.rows() < 2) {
+            continue;
+        }
+        for (int end = 0; end < 2; ++end) {
+            const bool atEnd = end == 1;
+            if ((atEnd ? line.endJunction : line.startJunction) >= 0) {
+                continue;
+            }
+            const Eigen::Index tip = atEnd ? line.points.rows() - 1 : 0;
+            const Eigen::RowVector3d p = line.points.row(tip);
+            Eigen::RowVector3d q;
+            if (!closestOnLines(anchors, p, q)) {
+                continue;
+            }
+            const double distance = (q - p).norm();
+            if (distance > reach) {
+                continue;
+            }
+            // Ahead of the end: the line runs on towards the anchor line, not along it.
+            const Eigen::RowVector3d direction = endDirection(line.points, atEnd, reach);
+            if (distance > 0.0 && direction.dot((q - p) / distance) < cosMax) {
+                continue;
+            }
+            PointMatrix extended(line.points.rows() + 1, 3);
+            if (atEnd) {
+                extended << line.points, q;
+            }
+            else {
+                extended << q, line.points;
+            }
+            line.points = std::move(extended);
+            anchored[2 * l + static_cast<size_t>(end)] = 1;
+        }
+    }
+    return anchored;
+}
+
+int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, double minLength)
+{
+    const size_t lineCount = network.lines.size();
+    if (!(minLength > 0.0) || lineCount == 0) {
+        return 0;
+    }
+    // Pieces: lines joined through shared junctions.
+    std::vector<int> parent(lineCount);
+    std::iota(parent.begin(), parent.end(), 0);
+    std::function<int(int)> find = [&](int x) {
+        return parent[x] == x ? x : parent[x] = find(parent[x]);
+    };
+    std::map<int, int> lineAtJunction;
+    for (size_t l = 0; l < lineCount; ++l) {
+        for (int j : {network.lines[l].startJunction, network.lines[l].endJunction}) {
+            if (j < 0) {
+                continue;
+            }
+            auto [it, inserted] = lineAtJunction.emplace(j, static_cast<int>(l));
+            if (!inserted) {
+                parent[find(static_cast<int>(l))] = find(it->second);
+            }
+        }
+    }
+    struct Piece
+    {
+        double length = 0.0;
+        int openLines = 0;
+        int looseEnds = 0; // ends on no junction, anchored or not
+        int freeEnds = 0;  // ends on nothing at all
+        std::vector<int> junctions;
+        bool closedLine = false;
+    };
+    std::map<int, Piece> pieces;
+    for (size_t l = 0; l < lineCount; ++l) {
+        const Polyline& line = network.lines[l];
+        Piece& p = pieces[find(static_cast<int>(l))];
+        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+            p.length += (line.points.row(i) - line.points.row(i - 1)).norm();
+        }
+        if (line.closed) {
+            p.closedLine = true;
+            continue;
+        }
+        ++p.openLines;
+        const int ends[2] = {line.startJunction, line.endJunction};
+        for (int e = 0; e < 2; ++e) {
+            if (ends[e] >= 0) {
+                p.junctions.push_back(ends[e]);
+                continue;
+            }
+            ++p.looseEnds;
+            if (!anchored[2 * l + static_cast<size_t>(e)]) {
+                ++p.freeEnds;
+            }
+        }
+    }
+    std::vector<char> keepPiece(lineCount, 0);
+    for (auto& [id, p] : pieces) {
+        std::sort(p.junctions.begin(), p.junctions.end());
+        const auto junctions = std::unique(p.junctions.begin(), p.junctions.end()) -
+                               p.junctions.begin();
+        // A tree of E lines has E + 1 end nodes (junctions and loose ends); more lines than
+        // that close a cycle.
+        const bool cycle = p.closedLine || p.openLines >= junctions + p.looseEnds;
+        keepPiece[static_cast<size_t>(id)] = cycle || p.freeEnds == 0 || p.length >= minLength;
+    }
+    std::vector<Polyline> kept;
+    std::map<int, int> newJunction;
+    int dropped = 0;
+    for (size_t l = 0; l < lineCount; ++l) {
+        if (!keepPiece[static_cast<size_t>(find(static_cast<int>(l)))]) {
+            ++dropped;
+            continue;
+        }
+        Polyline line = network.lines[l];
+        for (int* j : {&line.startJunction, &line.endJunction}) {
+            if (*j >= 0) {
+                *j = newJunction.emplace(*j, static_cast<int>(newJunction.size())).first->second;
+            }
+        }
+        kept.push_back(std::move(line));
+    }
+    PointMatrix junctions(static_cast<Eigen::Index>(newJunction.size()), 3);
+    for (const auto& [old, now] : newJunction) {
+        junctions.row(now) = network.junctions.row(old);
+    }
+    network.lines = std::move(kept);
+    network.junctions = std::move(junctions);
+    return dropped;
+}
+
 double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
-                     double spacing)
+                     double spacing, int maxSamples)
 {
     const Eigen::Index n = P.rows();
-    if (n == 0 || N.size() != n || normals.rows() != n || !(spacing > 0.0)) {
+    if (n == 0 || N.size() != n || normals.rows() != n || !(spacing > 0.0) || N.k() < 6) {
         throw std::invalid_argument("estimateNoise: empty or mismatched input");
     }
-    std::vector<double> offsets(static_cast<size_t>(n));
+    const Eigen::Index stride =
+        maxSamples > 0 ? std::max<Eigen::Index>(1, (n + maxSamples - 1) / maxSamples) : 1;
+    const Eigen::Index samples = (n + stride - 1) / stride;
+    std::vector<double> residuals(static_cast<size_t>(samples), 0.0);
 #pragma omp parallel for schedule(static)
-    for (Eigen::Index i = 0; i < n; ++i) {
-        Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
-        for (int j = 0; j < N.k(); ++j) {
-            centroid += P.row(N.indices(i, j));
+    for (Eigen::Index s = 0; s < samples; ++s) {
+        const Eigen::Index i = s * stride;
+        // The height of p over the quadric z = a x^2 + b xy + c y^2 + d x + e y + f fitted to
+        // its neighbours alone, in p's normal frame: on a smooth surface the quadric predicts
+        // p to third order, so what remains is noise, whatever the curvature.
+        const Eigen::Vector3d w = normals.row(i).transpose().normalized();
+        const Eigen::Vector3d u = w.unitOrthogonal();
+        const Eigen::Vector3d v = w.cross(u);
+        const double radius = std::sqrt(N.squaredDistances(i, N.k() - 1));
+        if (!(radius > 0.0) || !w.allFinite()) {
+            continue;
         }
-        centroid /= N.k();
-        offsets[i] = std::abs((P.row(i) - centroid).dot(normals.row(i)));
+        Eigen::Matrix<double, 6, 6> AtA = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> Atz = Eigen::Matrix<double, 6, 1>::Zero();
+        for (int j = 0; j < N.k(); ++j) {
+            const Eigen::Vector3d d = (P.row(N.indices(i, j)) - P.row(i)).transpose() / radius;
+            const double x = d.dot(u), y = d.dot(v), z = d.dot(w);
+            Eigen::Matrix<double, 6, 1> row;
+            row << x * x, x * y, y * y, x, y, 1.0;
+            AtA.selfadjointView<Eigen::Lower>().rankUpdate(row);
+            Atz += z * row;
+        }
+        const Eigen::LDLT<Eigen::Matrix<double, 6, 6>, Eigen::Lower> ldlt(AtA);
+        if (ldlt.info() != Eigen::Success) {
+            continue;
+        }
+        const double f = ldlt.solve(Atz)(5);
+        residuals[static_cast<size_t>(s)] = std::isfinite(f) ? std::abs(f) * radius : 0.0;
     }
-    return median(std::move(offsets)) / spacing;
+    return median(std::move(residuals)) / spacing;
 }
 
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
@@ -115,7 +566,7 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         g.points.row(static_cast<Eigen::Index>(i)) = P.row(members[i]);
     }
     g.normals = pcaNormals(g.points, g.neighbours).normals;
-    g.noise = estimateNoise(g.points, g.normals, g.neighbours, spacing);
+    g.noise = estimateNoise(g.points, g.normals, g.neighbours, spacing, options.noiseSamples);
     g.smoothed = options.smoothing == SmoothingMode::Always ||
                  (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
     if (g.smoothed) {
@@ -126,12 +577,11 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         g.normals = pcaNormals(g.points, g.neighbours).normals;
     }
     g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
-    g.curvature = meanCurvature(g.points, g.normals, g.neighbours, options.curvature);
-    if (g.smoothed) {
-        for (int pass = 0; pass < options.curvatureAveragingPasses; ++pass) {
-            g.curvature = averageOverNeighbours(g.curvature, g.neighbours);
-        }
-    }
+    g.curvature = regionCurvature(g.points, g.normals, g.neighbours,
+                                  g.smoothed ? options.curvatureAveragingPasses : 0,
+                                  options.curvature);
+    g.curvatureNoise =
+        g.noise * curvatureNoisePerNoise(g.neighbours.k(), g.smoothed, options) / spacing;
     return g;
 }
 
@@ -155,13 +605,17 @@ ThresholdResult regionHigherThreshold(const RegionGeometry& region, double thres
 
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options,
-                                       const std::vector<int>& subset)
+                                       const std::vector<int>& subset,
+                                       const std::vector<Polyline>& anchors)
 {
     if (!std::isfinite(threshold)) {
         throw std::invalid_argument("the curvature threshold must be a finite number");
     }
     if (options.maxCandidateClusterSize < 1) {
         throw std::invalid_argument("the largest candidate cluster must hold at least one point");
+    }
+    if (!(options.anchorReach >= 0.0) || !(options.anchorAngle >= 0.0)) {
+        throw std::invalid_argument("the anchoring reach and angle must not be negative");
     }
     const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
     SmoothEdgeLevel level;
@@ -175,11 +629,20 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     for (size_t c = 0; c < candidate.size(); ++c) {
         candidate[c] = level.clusters.size[c] <= options.maxCandidateClusterSize;
     }
+    // Open pieces are judged after their ends are anchored on the lines that bound the region
+    // (a fillet border running from one sharp edge to another is short but complete).
+    ClusterGraphOptions graphOptions = options.graph;
+    graphOptions.minOpenComponentLength = 0.0;
     const ClusterGraph graph = buildClusterGraph(region.points, region.neighbours,
                                                  level.clusters.cluster, candidate,
-                                                 region.spacing, options.graph);
+                                                 region.spacing, graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
+    const std::vector<char> anchored =
+        anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
+                       options.anchorAngle);
+    level.counts.droppedComponents +=
+        dropOpenPieces(level.network, anchored, options.graph.minOpenComponentLength * region.spacing);
     return level;
 }
 
@@ -187,8 +650,9 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options)
 {
     const AutomaticThresholdOptions& a = options.automatic;
-    if (a.maxThresholds < 0 || a.minRatio < 1.0 || a.minInnerPoints < 0 || a.minContrast < 1.0 ||
-        !(a.flatRadius > 0.0)) {
+    if (a.maxThresholds < 0 || a.maxSearches < 0 || a.maxMisses < 0 || a.minRatio < 1.0 ||
+        a.minInnerPoints < 0 || a.minContrast < 1.0 || !(a.flatRadius > 0.0) ||
+        !(a.minSeparation >= 0.0) || !(a.maxStraddle >= 0.0) || a.straddleSamples < 0) {
         throw std::invalid_argument("automatic thresholds: the limits are out of range");
     }
     const int minInner = a.minInnerPoints > 0 ? a.minInnerPoints : 2 * region.neighbours.k();
@@ -196,25 +660,42 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
     const ThresholdOptions histogram = histogramOptions(region, options);
     const std::vector<double> all = valuesOf(region, {});
     const std::vector<int> everyPoint = allIndices(region.points.rows());
+    constexpr double infinity = std::numeric_limits<double>::infinity();
 
     std::vector<ThresholdDecision> decisions;
     int accepted = 0;
-    // Ranges of values (low, high] still to search, depth first; the first is the whole
-    // histogram with its outliers (Sec. 2.4), the next ones below and above each accepted tau.
+    // Ranges of values (low, high] still to search, depth first. The first is the whole
+    // histogram with its outliers (Sec. 2.4); an accepted tau opens the ranges below and above
+    // it (the paper's "lower" and "higher" steps, Sec. 2.3). A threshold is weighed against the
+    // patches it separates: the values between the nearest accepted thresholds on either side
+    // (patchLow, patchHigh], not only the values of the range searched.
     struct Range
     {
         double low, high;
+        double patchLow, patchHigh;
         bool first;
+        int misses; // thresholds refused on the way to this range
     };
-    std::vector<Range> ranges{{-std::numeric_limits<double>::infinity(),
-                               std::numeric_limits<double>::infinity(), true}};
-    while (!ranges.empty() && accepted < a.maxThresholds) {
+    std::vector<Range> ranges{{-infinity, infinity, -infinity, infinity, true, 0}};
+    while (!ranges.empty() && accepted < a.maxThresholds &&
+           static_cast<int>(decisions.size()) < a.maxSearches) {
         const Range range = ranges.back();
         ranges.pop_back();
         std::vector<double> values;
         for (double v : all) {
             if (v > range.low && v <= range.high) {
                 values.push_back(v);
+            }
+        }
+        if (values.empty()) {
+            continue;
+        }
+        if (!range.first) {
+            // A range whose values cannot hold two levels (contrast, separation) is not split.
+            const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+            if ((*hi + flat) / (*lo + flat) < a.minContrast ||
+                *hi - *lo < a.minSeparation * region.curvatureNoise) {
+                continue;
             }
         }
         ThresholdOptions h = histogram;
@@ -228,26 +709,59 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         catch (const std::invalid_argument&) {
             continue; // too few distinct values in this range: nothing to split
         }
-        const double tau = d.result.threshold;
+        const double tau =
+            a.centreThresholds ? valleyMiddle(d.result, h.minPeakPercent) : d.result.threshold;
+        d.applied = tau;
+        // Sec. 2.4: the outliers leave the histogram, not the patches.
+        const double searchHigh = range.first ? d.result.outlierCut : range.high;
         std::vector<double> below, above;
-        for (double v : values) {
-            (v <= tau ? below : above).push_back(v);
+        for (double v : all) {
+            if (v > range.patchLow && v <= range.patchHigh) {
+                (v <= tau ? below : above).push_back(v);
+            }
         }
-        const double medBelow = median(below);
-        const double medAbove = median(above);
-        d.contrast = (medAbove + flat) / (medBelow + flat);
+        d.medianBelow = median(below);
+        d.medianAbove = median(above);
+        d.contrast = (d.medianAbove + flat) / (d.medianBelow + flat);
+        d.separation = region.curvatureNoise > 0.0
+                           ? (d.medianAbove - d.medianBelow) / region.curvatureNoise
+                           : infinity;
         const std::vector<PointLabel> labels =
             labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
         d.innerPoints = static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
-        d.accepted = d.result.ratio >= a.minRatio && d.innerPoints >= minInner &&
-                     d.contrast >= a.minContrast;
+        d.straddle =
+            straddleShare(region, labels, a.straddleSamples, range.patchLow, range.patchHigh);
+        d.largestPatch = largestPatch(region.curvature, tau, range.patchHigh, region.ring);
+        d.largestPatchBelow = largestPatch(region.curvature, range.patchLow, tau, region.ring);
+        const bool patch = d.largestPatch >= minInner;
+        const bool patchBelow = d.largestPatchBelow >= minInner;
+        const bool levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
+                            d.straddle <= a.maxStraddle;
+        d.accepted = d.result.ratio >= a.minRatio && patch && patchBelow && levels;
         decisions.push_back(d);
         if (d.accepted) {
             ++accepted;
-            const double high = range.first ? d.result.outlierCut : range.high;
             // Searched next: the higher values first, then the lower (Sec. 2.3 offers both).
-            ranges.push_back({range.low, tau, false});
-            ranges.push_back({tau, high, false});
+            ranges.push_back({range.patchLow, tau, range.patchLow, tau, false, 0});
+            ranges.push_back({tau, searchHigh, tau, range.patchHigh, false, 0});
+        }
+        else if (range.misses >= a.maxMisses) {
+            continue;
+        }
+        else if (!patch) {
+            // No patch above tau: the valley found lies above the highest patch of the range
+            // (e.g. after a fillet peak at the top of the histogram); the patches' own valley
+            // is lower down (Sec. 2.3, "lower threshold").
+            ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh,
+                              false, range.misses + 1});
+        }
+        else if (!levels || !patchBelow) {
+            // tau splits one curvature level in two (a peak and its own noise tail), or cuts
+            // the transition between two levels short of the lower one; a second level, if
+            // any, lies higher up (Sec. 4, Fig. 9 a: "the desired threshold is located after
+            // the second peak").
+            ranges.push_back({d.result.threshold, searchHigh, range.patchLow, range.patchHigh,
+                              false, range.misses + 1});
         }
     }
     return decisions;

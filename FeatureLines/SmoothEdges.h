@@ -28,19 +28,35 @@ enum class SmoothingMode
 /// The automatic mode, designed beyond the paper (which leaves the number of thresholds to
 /// the user, Sec. 2.3): the first threshold of the region's histogram is searched; a threshold
 /// is accepted when it is significant; the values below and above an accepted threshold are
-/// searched again (the paper's "lower" and "higher" steps), until no valley is significant or
-/// maxThresholds are accepted. A threshold is significant when all three hold:
+/// searched again (the paper's "lower" and "higher" steps). A refused threshold sends the
+/// search on too: below it when no patch lies above it (the valley after the highest peak),
+/// above it when it splits one curvature level (a peak and its noise tail, Sec. 4, Fig. 9 a).
+/// A range is searched after at most maxMisses refusals in a row, and only when its values
+/// could hold two levels (their extremes meet the contrast and separation below). The search
+/// stops when maxThresholds are accepted or maxSearches weighed.
+/// A threshold is significant when all of these hold, the patches being the values between
+/// the nearest accepted thresholds below and above it:
 ///  - its valley ratio e(tau) = b1 / b2 is at least minRatio (a peak, then a valley);
-///  - the points above it form patches: at least minInnerPoints inner points (Sec. 3 labels),
-///    so scattered noise above a threshold in a single peak's tail is no patch;
+///  - the levels above and below it each hold a patch: a connected cluster of at least
+///    minInnerPoints points of the level whose whole 1-ring lies in the level (the inner
+///    points of Sec. 3). Scattered noise above a threshold in a peak's tail is no patch, nor
+///    is the thin band of values a curvature step passes through between two patches;
 ///  - the curvature contrast (c_above + c_flat) / (c_below + c_flat), with c_above and c_below
-///    the medians above tau and at or below it within the values searched, is at least
-///    minContrast: two curvature levels, not one level split in two. c_flat = 1 / (flatRadius x
-///    spacing) is the curvature that cannot be told from a plane at this sampling, so the
-///    round-off values of a flat face (all ~0) never make a contrast.
+///    the median curvatures of the patches above and below, is at least minContrast: two
+///    curvature levels, not one level split in two. c_flat = 1 / (flatRadius x spacing) is
+///    the curvature that cannot be told from a plane at this sampling, so the round-off values
+///    of a flat face (all ~0) never make a contrast;
+///  - c_above - c_below is at least minSeparation curvature noise floors
+///    (RegionGeometry::curvatureNoise): the two levels are farther apart than noise spreads
+///    one level.
 struct AutomaticThresholdOptions
 {
     int maxThresholds = 3;
+    /// Thresholds weighed at most (accepted or not): each costs a labelling of the region.
+    int maxSearches = 16;
+    /// Refused thresholds in a row after which a range is given up: one to step from a valley
+    /// above the highest peak down to the patches' valley, one more to step over a noise tail.
+    int maxMisses = 2;
     double minRatio = 2.0;
     /// 0: 2 k, two neighbourhoods' worth of points.
     int minInnerPoints = 0;
@@ -50,25 +66,70 @@ struct AutomaticThresholdOptions
     /// x spacing. Over a neighbourhood of radius 2.5 spacings a sphere of radius 200 spacings
     /// departs from its tangent plane by 0.016 spacing, below any scanner's noise.
     double flatRadius = 200.0;
+    /// In curvature noise floors (standard deviations of a flat face's curvature). Two levels
+    /// 4 floors apart put a threshold between them 2 floors from each: 2 % of each patch's
+    /// points fall on the wrong side, which the labels of Sec. 3 absorb as noisy points. A
+    /// noise tail split off a flat face (folded normal) has medians this far apart only above
+    /// 4.5 floors, where fewer than 1 point in 100 000 lies, and those do not form a patch.
+    double minSeparation = 4.0;
+    /// Apply each accepted threshold in the middle of its valley (ThresholdDecision::applied):
+    /// between the histogram's tau, where the valley starts after the lower peak, and the
+    /// rise to the next peak. The fit blurs a curvature step symmetrically, so the middle
+    /// level crosses on the tangent line; the valley's start can lie up to a neighbourhood
+    /// radius off it, onto the flatter side.
+    bool centreThresholds = true;
+    /// Border points whose surroundings are looked at for the straddle share (evenly
+    /// strided); a share is known to about 1 % from that many.
+    int straddleSamples = 2000;
+    /// Largest share of the border points of a threshold that may lie within two fit radii of
+    /// a level below the patch under it (or above the patch over it). A higher share means the
+    /// level above is bordered by the transition down to another threshold's level rather
+    /// than by the level under it: its lines would trace another threshold's lines again,
+    /// shifted onto the slope when the level above drifts (a variable-radius fillet split
+    /// along its length). Half: a patch's border may meet other levels at its ends.
+    double maxStraddle = 0.5;
+};
+
+/// The flat patch on which the curvature noise floor is measured (RegionGeometry::
+/// curvatureNoise): a jittered square grid of patchSide x patchSide points at unit spacing,
+/// heights drawn from a normal distribution of `noise` spacings (seeded).
+struct SyntheticNoiseOptions
+{
+    /// 48 x 48 points: the central 24 x 24, a dozen neighbourhood radii from the rim, give a
+    /// median known to a few percent.
+    int patchSide = 48;
+    /// x spacing; any value well below the spacing does (the floor is per unit of noise).
+    double noise = 0.3;
+    unsigned seed = 1;
 };
 
 struct SmoothEdgeOptions
 {
     SmoothingMode smoothing = SmoothingMode::Automatic;
-    /// Noise level (x spacing) above which Automatic smoothing applies. The noise estimate is
-    /// the median distance of a point from the centroid of its neighbours along its normal:
-    /// about 0.8 sigma for normal noise sigma, and below 0.05 spacing on a clean surface whose
-    /// radius of curvature is 10 spacings or more.
-    double noiseThreshold = 0.08;
+    /// Noise level (x spacing, see estimateNoise) above which Automatic smoothing applies.
+    /// Without smoothing the quadric fit of Sec. 2.1 turns noise n into curvature noise of
+    /// about 0.27 n / spacing^2 (the noise floor's flat patch measures it): noise of 0.02
+    /// spacing gives a flat face a curvature spread of 1 / (185 spacings), the flatRadius
+    /// level; above it smoothing pays for its blur. A clean surface shows below 0.005 at any
+    /// curvature (the estimate fits a quadric).
+    double noiseThreshold = 0.02;
     /// Taubin passes when smoothing. Twenty passes of lambda|mu bring noise of 0.3 spacing
     /// below the curvature contrast of a fillet of radius 6 spacings.
     SmoothingOptions smoothingOptions{20, 0.5, -0.53};
     /// Passes of averaging the curvature over each point's neighbourhood, in smoothed regions
     /// only (beyond Sec. 2.4). Smoothing the points leaves the quadric fit a residual noise that
-    /// still spreads a flat face's curvature over a fillet's; one pass of averaging over 17
-    /// values cuts that spread by about four and moves a curvature step by less than a
-    /// neighbourhood radius, symmetrically about the tangent line.
-    int curvatureAveragingPasses = 1;
+    /// still spreads a flat face's curvature over a fillet's. The signed curvature is averaged
+    /// (over normals oriented alike), so a flat face's noise, of either sign, cancels instead
+    /// of adding up. Each pass spreads a curvature step over one more neighbourhood radius,
+    /// symmetrically about the tangent line; two passes halve the noise floor of a region
+    /// smoothed from 0.3 spacing of noise (RegionGeometry::curvatureNoise, 0.013 -> 0.0045 per
+    /// spacing against none) and leave a flat of 6 spacings between two fillets its own
+    /// level (2 x 2.5 spacings of blur).
+    int curvatureAveragingPasses = 2;
+    /// Points sampled for the noise estimate (every n-th point so that at most this many are
+    /// fitted; 0: all). The estimate is a median, which 20 000 samples fix to within 1 %.
+    int noiseSamples = 20000;
+    SyntheticNoiseOptions noiseFloor;
     CurvatureOptions curvature;
     /// L_start, outliers and search of Sec. 2.2-2.4. outlierPercent < 0 chooses: 1 % for a
     /// smoothed (noisy) region, none for a clean one (Sec. 2.4: outliers come with noise).
@@ -77,7 +138,17 @@ struct SmoothEdgeOptions
     /// Sec. 3: "small clusters" are the clusters of at most this many points (the single
     /// points met at a label change).
     int maxCandidateClusterSize = 1;
+    /// The graph of Sec. 3. Its open-piece filter (minOpenComponentLength) is applied after
+    /// the line ends are anchored.
     ClusterGraphOptions graph;
+    /// x spacing: a free line end this close to a sharp or boundary line is extended to it.
+    /// The region ends SmoothRegionOptions::bandWidth (2.5) from a sharp line, and the graph
+    /// ends a line up to a node radius (1.5) and its smoothing short of its last candidate:
+    /// 5 spacings reach across, and stay below the gap of two lines' ends facing each other.
+    double anchorReach = 5.0;
+    /// Degrees between the line's direction at its end and the way to the anchor point: the
+    /// line runs on into the anchor line, not along it.
+    double anchorAngle = 60.0;
     AutomaticThresholdOptions automatic;
     /// Seed of the random choice of growing seeds (Sec. 3).
     unsigned seed = 1;
@@ -98,6 +169,9 @@ struct RegionGeometry
     /// Estimated noise (x spacing) before smoothing, and whether the region was smoothed.
     double noise = 0.0;
     bool smoothed = false;
+    /// The curvature noise floor (1 / length unit): the standard deviation of the curvature a
+    /// flat face of this region's noise shows after the region's smoothing, fit and averaging.
+    double curvatureNoise = 0.0;
     double spacing = 0.0;
 };
 
@@ -108,10 +182,12 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
                              int regionId, double spacing, const SmoothEdgeOptions& options = {});
 
-/// Median distance (x spacing) of each point from the centroid of its neighbours, along
-/// its normal: the noise estimate of SmoothEdgeOptions::noiseThreshold.
+/// The noise estimate of SmoothEdgeOptions::noiseThreshold (x spacing): the median distance of
+/// a point from the quadric fitted to its neighbours (in its normal's frame, the point itself
+/// left out). Insensitive to curvature; about 0.9 sigma for normal noise sigma. At most
+/// maxSamples points are fitted (every n-th; 0: all).
 double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
-                     double spacing);
+                     double spacing, int maxSamples = 0);
 
 /// The closed lines at one threshold of a region.
 struct SmoothEdgeLevel
@@ -126,10 +202,27 @@ struct SmoothEdgeLevel
 };
 
 /// Sec. 3 at threshold tau over the whole region, or over `subset` (region point indices)
-/// only, as the multi-step refinement does.
+/// only, as the multi-step refinement does. Free line ends are anchored on the `anchors`
+/// (the sharp and boundary lines around the region, see anchorLineEnds); open pieces shorter
+/// than options.graph.minOpenComponentLength with a free end left are then dropped.
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options = {},
-                                       const std::vector<int>& subset = {});
+                                       const std::vector<int>& subset = {},
+                                       const std::vector<Polyline>& anchors = {});
+
+/// Sec. 1.2: the smooth edges of a region end on the sharp edges (or the boundary) around it,
+/// but the region stops a band short of them. Every free end (no junction) of an open line
+/// that lies within `reach` of an anchor line, and points towards it (within
+/// maxAngleDegrees of the line's direction at that end), is extended to the closest point of
+/// the anchor lines. Returns per line two flags, start and end: anchored.
+std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
+                                 double reach, double maxAngleDegrees);
+
+/// Drops the pieces of lines (lines joined through junctions) that have no cycle, are shorter
+/// than minLength in total and keep an end on nothing (neither a junction nor, by the
+/// `anchored` flags of anchorLineEnds, an anchor line): noise gathered along a surface rather
+/// than a feature. Junctions are renumbered. Returns the number of lines dropped.
+int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, double minLength);
 
 /// The histogram search on the region's curvature (or on `subset`'s) with the region's outlier
 /// rule: the first threshold, and the next lower / higher one (Sec. 2.2-2.3).
@@ -145,13 +238,27 @@ struct ThresholdDecision
 {
     ThresholdResult result;
     bool accepted = false;
+    /// The threshold applied when accepted (AutomaticThresholdOptions::centreThresholds).
+    double applied = 0.0;
+    /// Inner points at tau (Sec. 3). The largest patches of the levels above and below tau:
+    /// connected points of the level whose whole 1-ring is in the level too.
     int innerPoints = 0;
+    int largestPatch = 0;
+    int largestPatchBelow = 0;
+    /// Median curvature of the patches below and above tau (between the nearest accepted
+    /// thresholds), their contrast and their separation in curvature noise floors.
+    double medianBelow = 0.0;
+    double medianAbove = 0.0;
     double contrast = 0.0;
+    double separation = 0.0;
+    /// Share of the border points at tau within two fit radii of a level outside the two
+    /// patches (AutomaticThresholdOptions::maxStraddle).
+    double straddle = 0.0;
 };
 
 /// The automatic mode (see AutomaticThresholdOptions): every threshold searched, in the order
-/// searched, with its decision. The accepted ones, sorted from high to low, are the region's
-/// thresholds. A region with no significant valley (a plane, a sphere) accepts none.
+/// searched, with its decision. The accepted ones' applied values, sorted from high to low,
+/// are the region's thresholds. A region with no significant valley (a plane, a sphere) accepts none.
 std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options = {});
 
