@@ -408,6 +408,116 @@ std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polylin
     return anchored;
 }
 
+int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength)
+{
+    if (!(minLength > 0.0)) {
+        return 0;
+    }
+    auto length = [](const Polyline& line) {
+        double sum = 0.0;
+        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+            sum += (line.points.row(i) - line.points.row(i - 1)).norm();
+        }
+        return sum;
+    };
+    std::vector<Polyline>& lines = network.lines;
+    std::vector<char> removed(lines.size(), 0);
+    int pruned = 0;
+    for (bool changed = true; changed;) {
+        changed = false;
+        // 1. Short lines from a junction to an end on nothing.
+        for (size_t l = 0; l < lines.size(); ++l) {
+            const Polyline& line = lines[l];
+            if (removed[l] || line.closed) {
+                continue;
+            }
+            const bool startFree = line.startJunction < 0 && !anchored[2 * l];
+            const bool endFree = line.endJunction < 0 && !anchored[2 * l + 1];
+            const bool dangling = (startFree && line.endJunction >= 0) ||
+                                  (endFree && line.startJunction >= 0);
+            if (dangling && length(line) < minLength) {
+                removed[l] = 1;
+                ++pruned;
+                changed = true;
+            }
+        }
+        if (!changed) {
+            break;
+        }
+        // 2. Junctions left with fewer than three line ends: one end becomes an end on nothing
+        // (it ended on lines that are gone), two ends are one line through the point.
+        std::map<int, std::vector<std::pair<size_t, int>>> ends; // junction -> (line, 0|1)
+        for (size_t l = 0; l < lines.size(); ++l) {
+            if (removed[l] || lines[l].closed) {
+                continue;
+            }
+            if (lines[l].startJunction >= 0) {
+                ends[lines[l].startJunction].emplace_back(l, 0);
+            }
+            if (lines[l].endJunction >= 0) {
+                ends[lines[l].endJunction].emplace_back(l, 1);
+            }
+        }
+        for (const auto& [junction, at] : ends) {
+            if (at.size() == 1) {
+                Polyline& line = lines[at[0].first];
+                (at[0].second == 0 ? line.startJunction : line.endJunction) = -1;
+                anchored[2 * at[0].first + static_cast<size_t>(at[0].second)] = 0;
+            }
+            else if (at.size() == 2) {
+                auto [a, aEnd] = at[0];
+                auto [b, bEnd] = at[1];
+                if (a == b) {
+                    // Both ends of one line: a loop through the junction.
+                    Polyline& line = lines[a];
+                    if (line.points.rows() > 2) {
+                        line.points.conservativeResize(line.points.rows() - 1, 3);
+                    }
+                    line.closed = true;
+                    line.startJunction = line.endJunction = -1;
+                    continue;
+                }
+                // a ends at the junction, b starts there: a + b.
+                auto reverse = [&](size_t l) {
+                    Polyline& line = lines[l];
+                    line.points = line.points.colwise().reverse().eval();
+                    std::swap(line.startJunction, line.endJunction);
+                    std::swap(anchored[2 * l], anchored[2 * l + 1]);
+                };
+                if (aEnd == 0) {
+                    reverse(a);
+                }
+                if (bEnd == 1) {
+                    reverse(b);
+                }
+                Polyline& first = lines[a];
+                const Polyline& second = lines[b];
+                PointMatrix joined(first.points.rows() + second.points.rows() - 1, 3);
+                joined << first.points, second.points.bottomRows(second.points.rows() - 1);
+                first.points = std::move(joined);
+                first.endJunction = second.endJunction;
+                anchored[2 * a + 1] = anchored[2 * b + 1];
+                if (first.endJunction >= 0 && first.endJunction == first.startJunction) {
+                    // Handled as a loop in the next pass.
+                }
+                removed[b] = 1;
+            }
+        }
+    }
+    std::vector<Polyline> kept;
+    std::vector<char> keptAnchored;
+    for (size_t l = 0; l < lines.size(); ++l) {
+        if (!removed[l]) {
+            kept.push_back(std::move(lines[l]));
+            keptAnchored.push_back(anchored[2 * l]);
+            keptAnchored.push_back(anchored[2 * l + 1]);
+        }
+    }
+    lines = std::move(kept);
+    anchored = std::move(keptAnchored);
+    return pruned;
+}
+
 int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, double minLength)
 {
     const size_t lineCount = network.lines.size();
@@ -614,7 +724,8 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     if (options.maxCandidateClusterSize < 1) {
         throw std::invalid_argument("the largest candidate cluster must hold at least one point");
     }
-    if (!(options.anchorReach >= 0.0) || !(options.anchorAngle >= 0.0)) {
+    if (!(options.anchorReach >= 0.0) || !(options.anchorAngle >= 0.0) ||
+        !(options.anchorBand >= 0.0)) {
         throw std::invalid_argument("the anchoring reach and angle must not be negative");
     }
     const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
@@ -629,6 +740,24 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     for (size_t c = 0; c < candidate.size(); ++c) {
         candidate[c] = level.clusters.size[c] <= options.maxCandidateClusterSize;
     }
+    // Next to the lines that bound the region (an open cloud's boundary runs through it) the
+    // neighbourhoods are one-sided: no candidates there; the lines are anchored across.
+    if (!anchors.empty() && options.anchorBand > 0.0) {
+        std::vector<int> candidatePoints;
+        for (int i : points) {
+            const int c = level.clusters.cluster[i];
+            if (c >= 0 && candidate[c]) {
+                candidatePoints.push_back(i);
+            }
+        }
+        const std::vector<char> near = pointsNearLines(
+            region.points, candidatePoints, anchors, options.anchorBand * region.spacing);
+        for (size_t j = 0; j < candidatePoints.size(); ++j) {
+            if (near[j]) {
+                candidate[level.clusters.cluster[candidatePoints[j]]] = 0;
+            }
+        }
+    }
     // Open pieces are judged after their ends are anchored on the lines that bound the region
     // (a fillet border running from one sharp edge to another is short but complete).
     ClusterGraphOptions graphOptions = options.graph;
@@ -638,11 +767,11 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                                                  region.spacing, graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
-    const std::vector<char> anchored =
-        anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
-                       options.anchorAngle);
-    level.counts.droppedComponents +=
-        dropOpenPieces(level.network, anchored, options.graph.minOpenComponentLength * region.spacing);
+    std::vector<char> anchored = anchorLineEnds(
+        level.network, anchors, options.anchorReach * region.spacing, options.anchorAngle);
+    const double minOpen = options.graph.minOpenComponentLength * region.spacing;
+    level.counts.prunedBranches += pruneDanglingLines(level.network, anchored, minOpen);
+    level.counts.droppedComponents += dropOpenPieces(level.network, anchored, minOpen);
     return level;
 }
 

@@ -141,14 +141,22 @@ struct SmoothEdgeOptions
     /// The graph of Sec. 3. Its open-piece filter (minOpenComponentLength) is applied after
     /// the line ends are anchored.
     ClusterGraphOptions graph;
+    /// x spacing: candidate points this close to an anchor line (the boundary of an open
+    /// cloud runs through a region; sharp lines are SmoothRegionOptions::bandWidth away) are
+    /// left out of the graph. Their neighbourhoods are cut by the rim, so the fit, and in a
+    /// noisy region the smoothing, is one-sided there: a band of high curvature along the rim
+    /// would join the ends of neighbouring lines. The sharp lines' band, 2.5 spacings.
+    double anchorBand = 2.5;
     /// x spacing: a free line end this close to a sharp or boundary line is extended to it.
     /// The region ends SmoothRegionOptions::bandWidth (2.5) from a sharp line, and the graph
     /// ends a line up to a node radius (1.5) and its smoothing short of its last candidate:
     /// 5 spacings reach across, and stay below the gap of two lines' ends facing each other.
     double anchorReach = 5.0;
     /// Degrees between the line's direction at its end and the way to the anchor point: the
-    /// line runs on into the anchor line, not along it.
-    double anchorAngle = 60.0;
+    /// anchor must not lie behind the end (the line would have run past it). The direction is
+    /// taken over the last anchorReach of the line, which noise can bend by tens of degrees
+    /// near an end, so anything ahead counts.
+    double anchorAngle = 90.0;
     AutomaticThresholdOptions automatic;
     /// Seed of the random choice of growing seeds (Sec. 3).
     unsigned seed = 1;
@@ -217,6 +225,13 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
 /// the anchor lines. Returns per line two flags, start and end: anchored.
 std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
                                  double reach, double maxAngleDegrees);
+
+/// Removes the lines shorter than minLength that run from a junction to an end on nothing
+/// (neither a junction nor, by the `anchored` flags, an anchor line): spurs noise grows off a
+/// feature line. A junction left with two line ends joins them into one line (a loop when
+/// both are the same line's); left with one, that end is on nothing. Repeated until no such
+/// spur is left. `anchored` follows the lines. Returns the number of lines removed.
+int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength);
 
 /// Drops the pieces of lines (lines joined through junctions) that have no cycle, are shorter
 /// than minLength in total and keep an end on nothing (neither a junction nor, by the

@@ -187,6 +187,21 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
     return result;
 }
 
+std::vector<char> pointsNearLines(const PointMatrix& P, const std::vector<int>& points,
+                                  const std::vector<Polyline>& lines, double distance)
+{
+    std::vector<char> near(points.size(), 0);
+    if (lines.empty() || !(distance > 0.0)) {
+        return near;
+    }
+    const LineBand band(lines, distance);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < static_cast<long>(points.size()); ++i) {
+        near[static_cast<size_t>(i)] = band.contains(P.row(points[static_cast<size_t>(i)]));
+    }
+    return near;
+}
+
 Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<int>& region,
                                     const std::vector<int>& members, int regionId)
 {

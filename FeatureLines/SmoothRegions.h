@@ -49,6 +49,10 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
                                   const std::vector<char>& sharpCandidate, double spacing,
                                   const SmoothRegionOptions& options = {});
 
+/// Per listed point (rows of P): nonzero when it lies within `distance` of one of the lines.
+std::vector<char> pointsNearLines(const PointMatrix& P, const std::vector<int>& points,
+                                  const std::vector<Polyline>& lines, double distance);
+
 /// The k nearest neighbours of a region's points within the region, as indices into the
 /// region's member list (a sub-cloud). Neighbours outside the region are replaced by repeating
 /// the in-region ones nearest first, so every row still has k entries.

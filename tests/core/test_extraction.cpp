@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <limits>
 #include <set>
 
 #include "FeatureLines/Extraction.h"
@@ -40,8 +42,6 @@ double distanceToFlatBorder(const Eigen::RowVector3d& p, int axis, double side, 
                      (p[axis] - side * half) * (p[axis] - side * half));
 }
 
-} // namespace
-
 TEST(Extraction, CubeGivesTwelveSharpEdgesEnclosingSixFaces)
 {
     const shapes::Sample cube = shapes::cube(20.0, 0.5, 11);
@@ -63,11 +63,12 @@ TEST(Extraction, CubeGivesTwelveSharpEdgesEnclosingSixFaces)
     }
 }
 
-TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
+// Sec. 2.3, Fig. 7 b: planes | fillets | corners, two thresholds; at the first a closed loop
+// around each of the 8 spherical corners, at the second around each of the 6 flat faces, every
+// vertex within `tolerance` of its tangent line.
+void expectRoundedCubeLoops(const ExtractionResult& r, double edge, double radius,
+                            double tolerance)
 {
-    const double edge = 40.0, radius = 6.0, h = 0.5;
-    const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
-    const ExtractionResult r = extractFeatureLines(s.points);
     EXPECT_EQ(r.countLines(LineType::Sharp), 0) << "fillets of radius 12 spacings are smooth";
     ASSERT_EQ(r.regions.size(), 1u);
     ASSERT_EQ(r.regions[0].thresholds.size(), 2u) << "planes | fillets | corners";
@@ -88,8 +89,8 @@ TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
                                         std::copysign(a, c.z()));
         for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
             const Eigen::RowVector3d d = l->points.row(i) - centre;
-            EXPECT_NEAR(d.norm(), radius, 3 * h) << "on the corner sphere";
-            EXPECT_LT(d.cwiseAbs().minCoeff(), 3 * h) << "on a corner|fillet tangent arc";
+            EXPECT_NEAR(d.norm(), radius, tolerance) << "on the corner sphere";
+            EXPECT_LT(d.cwiseAbs().minCoeff(), tolerance) << "on a corner|fillet tangent arc";
         }
     }
     // tau2: one closed loop around each of the 6 flat faces, on the plane|fillet border.
@@ -103,8 +104,135 @@ TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
         const double side = c[axis] > 0 ? 1.0 : -1.0;
         for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
             EXPECT_LT(distanceToFlatBorder(l->points.row(i), static_cast<int>(axis), side, half, a),
-                      3 * h);
+                      tolerance);
         }
+    }
+}
+
+/// A rib's cap, open: the profile in the xz plane runs up a wall x = -(w/2 + r) from
+/// z = -r - wall to z = -r, round a convex fillet of radius r (centre (-w/2, -r)), along a flat
+/// top z = 0 of width w, round a second fillet and down the other wall; extruded over
+/// y in [-length/2, length/2]. Jittered grid of the given spacing in (arc length, y), as the
+/// shapes of SampledShapes.h. Smooth edges: four lines along y, at (x, z) = (+-w/2, 0) and
+/// (+-(w/2 + r), -r).
+shapes::Sample ribCap(double w, double r, double wall, double length, double h, unsigned seed)
+{
+    const double pi = std::acos(-1.0);
+    const double arc = pi / 2 * r;
+    const double profile = 2 * wall + 2 * arc + w;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    const int nu = static_cast<int>(std::lround(profile / h));
+    const int ny = static_cast<int>(std::lround(length / h));
+    shapes::Sample s;
+    s.points.resize(nu * ny, 3);
+    s.normals.resize(nu * ny, 3);
+    s.meanCurvature.resize(nu * ny);
+    s.part.resize(static_cast<size_t>(nu * ny));
+    for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nu; ++i) {
+            const double u = (i + 0.5 + jitter(rng)) * profile / nu;
+            const double y = (j + 0.5 + jitter(rng)) * length / ny - length / 2;
+            // Unfold the profile from its middle, which is symmetric: t >= 0 on the right half.
+            const double t = std::abs(u - profile / 2);
+            const double side = u < profile / 2 ? -1.0 : 1.0;
+            double x, z, nx, nz;
+            int part;
+            if (t <= w / 2) {
+                x = t, z = 0, nx = 0, nz = 1, part = 0;
+            }
+            else if (t <= w / 2 + arc) {
+                const double phi = (t - w / 2) / r; // 0 at the top, pi/2 at the wall
+                nx = std::sin(phi), nz = std::cos(phi);
+                x = w / 2 + r * nx, z = -r + r * nz, part = 1;
+            }
+            else {
+                x = w / 2 + r, z = -r - (t - w / 2 - arc), nx = 1, nz = 0, part = 2;
+            }
+            const int p = j * nu + i;
+            s.points.row(p) << side * x, y, z;
+            s.normals.row(p) << side * nx, 0.0, nz;
+            s.meanCurvature[p] = part == 1 ? 1.0 / (2 * r) : 0.0;
+            s.part[static_cast<size_t>(p)] = part;
+        }
+    }
+    return s;
+}
+
+} // namespace
+
+TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
+{
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
+    expectRoundedCubeLoops(extractFeatureLines(s.points), edge, radius, 3 * h);
+}
+
+TEST(Extraction, NoisyRoundedCubeGivesTheSameClosedLoops)
+{
+    // Noise of 0.3 spacing along the normal: the region is smoothed, its curvature averaged,
+    // and both valleys stand 4 noise floors clear of the noise (Sec. 2.4).
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    for (unsigned seed : {5u, 6u}) {
+        shapes::Sample s = shapes::roundedCube(edge, radius, h, seed);
+        shapes::addNormalNoise(s, 0.3 * h, seed + 10);
+        const ExtractionResult r = extractFeatureLines(s.points);
+        ASSERT_EQ(r.regions.size(), 1u);
+        EXPECT_TRUE(r.regions[0].smoothed);
+        expectRoundedCubeLoops(r, edge, radius, 3 * h);
+    }
+}
+
+// Sec. 4, Fig. 9: two fillets close to each other. A flat of 6 spacings between two fillets of
+// radius 10 spacings, walls beside them: all four borders, each a line along the whole cap
+// that ends on the boundary at both ends (Sec. 1.2), clean and with noise of 0.3 spacing.
+TEST(Extraction, CloseFilletsGiveAllFourBordersEndingOnTheBoundary)
+{
+    const double h = 0.5, w = 6 * h, r = 10 * h, length = 80 * h;
+    const double truthX[4] = {-w / 2, w / 2, -(w / 2 + r), w / 2 + r};
+    const double truthZ[4] = {0.0, 0.0, -r, -r};
+    for (double noise : {0.0, 0.3 * h}) {
+        shapes::Sample s = ribCap(w, r, 16 * h, length, h, 3);
+        if (noise > 0.0) {
+            shapes::addNormalNoise(s, noise, 4);
+        }
+        const ExtractionResult r0 = extractFeatureLines(s.points);
+        EXPECT_EQ(r0.countLines(LineType::Sharp), 0) << "noise " << noise;
+        const auto smooth = linesOf(r0, LineType::Smooth);
+        ASSERT_EQ(smooth.size(), 4u) << "noise " << noise;
+        const auto boundary = linesOf(r0, LineType::Boundary);
+        std::set<int> found;
+        for (const FeatureLine* l : smooth) {
+            // The true border nearest to the line's middle vertex; every vertex near it.
+            const Eigen::RowVector3d m = l->points.row(l->points.rows() / 2);
+            int nearest = 0;
+            for (int t = 1; t < 4; ++t) {
+                if (std::hypot(m.x() - truthX[t], m.z() - truthZ[t]) <
+                    std::hypot(m.x() - truthX[nearest], m.z() - truthZ[nearest])) {
+                    nearest = t;
+                }
+            }
+            found.insert(nearest);
+            for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
+                EXPECT_LT(std::hypot(l->points(i, 0) - truthX[nearest],
+                                     l->points(i, 2) - truthZ[nearest]),
+                          3 * h)
+                    << "noise " << noise;
+            }
+            // Both ends on the boundary, a spacing or two inside the rim of the sheet.
+            for (Eigen::Index end : {Eigen::Index(0), l->points.rows() - 1}) {
+                const Eigen::RowVector3d e = l->points.row(end);
+                double toBoundary = std::numeric_limits<double>::infinity();
+                for (const FeatureLine* b : boundary) {
+                    for (Eigen::Index i = 0; i < b->points.rows(); ++i) {
+                        toBoundary = std::min(toBoundary, (b->points.row(i) - e).norm());
+                    }
+                }
+                EXPECT_LT(toBoundary, 1.0 * h) << "noise " << noise;
+                EXPECT_GT(std::abs(e.y()), length / 2 - 3 * h) << "noise " << noise;
+            }
+        }
+        EXPECT_EQ(found.size(), 4u) << "every border found, noise " << noise;
     }
 }
 
