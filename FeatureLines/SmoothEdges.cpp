@@ -249,65 +249,81 @@ Eigen::VectorXd regionCurvature(const PointMatrix& P, const NormalMatrix& normal
     return options.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs());
 }
 
-/// The noise floor of the curvature, per unit of estimated noise: a flat patch sampled as a
-/// scan (a jittered grid of unit spacing) with normal noise goes through the same smoothing,
-/// fit and averaging as the region; the spread of its curvature, divided by its estimated
-/// noise, is the curvature a flat face shows per unit of noise. Both scale linearly with the
-/// noise (every step is linear in the heights for noise small against the spacing), so the
-/// ratio holds for any noise level and spacing. Computed once per set of options.
-double curvatureNoisePerNoise(int k, bool smoothed, const SmoothEdgeOptions& options)
+/// The curvature noise floor (x 1 / spacing) of a region with estimated noise `noise` (x
+/// spacing): a flat patch sampled as a scan (a jittered grid) with normal noise goes through
+/// the same smoothing, fit and averaging as the region; the spread of its curvature is the
+/// curvature a flat face shows from noise alone. The patch's noise is drawn so that its
+/// estimate matches the region's: the steps are nearly linear in the heights, but not quite
+/// (noise of a few tenths of a spacing changes which points are nearest neighbours). Cached
+/// per set of options and noise level (in steps of 5 %).
+double curvatureNoiseFloor(double noise, int k, bool smoothed, const SmoothEdgeOptions& options)
 {
+    if (!(noise > 0.0)) {
+        return 0.0;
+    }
     const int averaging = smoothed ? options.curvatureAveragingPasses : 0;
     const SmoothingOptions& so = options.smoothingOptions;
-    using Key = std::tuple<int, bool, int, double, double, int, int>;
-    const Key key{k, smoothed, so.iterations, so.lambda, so.mu, averaging, options.curvature.k};
+    const SyntheticNoiseOptions& sn = options.noiseFloor;
+    // Below a hundredth of a spacing every step is linear: one patch serves all levels.
+    const double level = std::max(noise, 0.01);
+    const int step = static_cast<int>(std::lround(std::log(level) / std::log(1.05)));
+    using Key = std::tuple<int, bool, int, double, double, int, int, int, int, unsigned>;
+    const Key key{k,       smoothed, so.iterations, so.lambda,   so.mu,
+                  averaging, options.curvature.k, step, sn.patchSide, sn.seed};
     static std::mutex mutex;
     static std::map<Key, double> cache;
+    double perNoise = 0.0;
     {
         std::lock_guard<std::mutex> lock(mutex);
         auto it = cache.find(key);
         if (it != cache.end()) {
-            return it->second;
+            perNoise = it->second;
         }
     }
-
-    const SyntheticNoiseOptions& sn = options.noiseFloor;
-    const int side = sn.patchSide;
-    std::mt19937 rng(sn.seed);
-    std::uniform_real_distribution<double> jitter(-0.25, 0.25);
-    std::normal_distribution<double> height(0.0, sn.noise);
-    PointMatrix P(side * side, 3);
-    for (int j = 0; j < side; ++j) {
-        for (int i = 0; i < side; ++i) {
-            P.row(j * side + i) << i + jitter(rng), j + jitter(rng), height(rng);
+    if (perNoise == 0.0) {
+        const int side = sn.patchSide;
+        std::mt19937 rng(sn.seed);
+        std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+        std::normal_distribution<double> gauss(0.0, 1.0);
+        PointMatrix P(side * side, 3);
+        for (int j = 0; j < side; ++j) {
+            for (int i = 0; i < side; ++i) {
+                P.row(j * side + i) << i + jitter(rng), j + jitter(rng), gauss(rng);
+            }
         }
-    }
-    NeighbourOptions no;
-    no.k = k;
-    const Neighbourhoods N = nearestNeighbours(P, no);
-    const double spacing = meanSpacing(N);
-    NormalMatrix normals = pcaNormals(P, N).normals;
-    const double noise = estimateNoise(P, normals, N, spacing);
-    if (smoothed) {
-        std::vector<int> all(static_cast<size_t>(P.rows()));
-        std::iota(all.begin(), all.end(), 0);
-        P = laplacianSmooth(P, N, all, so);
-        normals = pcaNormals(P, N).normals;
-    }
-    const Eigen::VectorXd H = regionCurvature(P, normals, N, averaging, options.curvature);
-    // Away from the patch's rim, where smoothing and fits are one-sided.
-    std::vector<double> interior;
-    const int margin = side / 4;
-    for (int j = margin; j < side - margin; ++j) {
-        for (int i = margin; i < side - margin; ++i) {
-            interior.push_back(std::abs(H[j * side + i]) * spacing);
+        NeighbourOptions no;
+        no.k = k;
+        // The grid's mean spacing, then heights of `level` spacings over the estimate's
+        // 0.9 sigma (see estimateNoise).
+        PointMatrix flat = P;
+        flat.col(2).setZero();
+        const double cell = meanSpacing(nearestNeighbours(flat, no));
+        P.col(2) *= std::exp(step * std::log(1.05)) / 0.9 * cell;
+        const Neighbourhoods N = nearestNeighbours(P, no);
+        const double spacing = meanSpacing(N);
+        NormalMatrix normals = pcaNormals(P, N).normals;
+        const double estimated = estimateNoise(P, normals, N, spacing);
+        if (smoothed) {
+            std::vector<int> all(static_cast<size_t>(P.rows()));
+            std::iota(all.begin(), all.end(), 0);
+            P = laplacianSmooth(P, N, all, so);
+            normals = pcaNormals(P, N).normals;
         }
+        const Eigen::VectorXd H = regionCurvature(P, normals, N, averaging, options.curvature);
+        // Away from the patch's rim, where smoothing and fits are one-sided.
+        std::vector<double> interior;
+        const int margin = side / 4;
+        for (int j = margin; j < side - margin; ++j) {
+            for (int i = margin; i < side - margin; ++i) {
+                interior.push_back(std::abs(H[j * side + i]) * spacing);
+            }
+        }
+        // |H| of a flat face is folded normal noise: its median is 0.674 deviations.
+        perNoise = estimated > 0.0 ? median(std::move(interior)) / 0.6745 / estimated : 0.0;
+        std::lock_guard<std::mutex> lock(mutex);
+        cache[key] = perNoise;
     }
-    // |H| of a flat face is folded normal noise: its median is 0.674 standard deviations.
-    const double perNoise = noise > 0.0 ? median(std::move(interior)) / 0.6745 / noise : 0.0;
-    std::lock_guard<std::mutex> lock(mutex);
-    cache[key] = perNoise;
-    return perNoise;
+    return noise * perNoise;
 }
 
 /// Direction of a line at one end (pointing out of the line), from the end vertex and the
@@ -691,7 +707,7 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                                   g.smoothed ? options.curvatureAveragingPasses : 0,
                                   options.curvature);
     g.curvatureNoise =
-        g.noise * curvatureNoisePerNoise(g.neighbours.k(), g.smoothed, options) / spacing;
+        curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / spacing;
     return g;
 }
 
