@@ -121,7 +121,7 @@ double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
 /// that have a point of curvature at most `low` or above `high` within two fit radii
 /// (gathered over two hops of the neighbourhoods).
 double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& labels,
-                     int samples, double low, double high)
+                     int samples, double low, double high, double reach)
 {
     std::vector<int> border;
     for (size_t i = 0; i < labels.size(); ++i) {
@@ -140,20 +140,122 @@ double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& lab
 #pragma omp parallel for schedule(dynamic, 16) reduction(+ : straddling)
     for (long s = 0; s < count; ++s) {
         const int p = border[static_cast<size_t>(s) * stride];
-        const double reach2 = 4.0 * N.squaredDistances(p, N.k() - 1);
+        const double reach2 = reach * reach * N.squaredDistances(p, N.k() - 1);
+        // Breadth first over the neighbourhoods, within the reach.
+        std::vector<int> queue{p};
         bool outside = false;
-        for (int j = 0; j < N.k() && !outside; ++j) {
-            const int q = N.indices(p, j);
-            for (int l = -1; l < N.k() && !outside; ++l) {
-                const int r = l < 0 ? q : N.indices(q, l);
+        for (size_t head = 0; head < queue.size() && !outside; ++head) {
+            const int q = queue[head];
+            for (int j = 0; j < N.k() && !outside; ++j) {
+                const int r = N.indices(q, j);
+                if ((g.points.row(r) - g.points.row(p)).squaredNorm() > reach2 ||
+                    std::find(queue.begin(), queue.end(), r) != queue.end()) {
+                    continue;
+                }
                 const double v = g.curvature[r];
-                outside = (v <= low || v > high) &&
-                          (g.points.row(r) - g.points.row(p)).squaredNorm() <= reach2;
+                outside = v <= low || v > high;
+                queue.push_back(r);
             }
         }
         straddling += outside ? 1 : 0;
     }
     return static_cast<double>(straddling) / static_cast<double>(count);
+}
+
+/// The curvature with the noise islands of threshold tau levelled: connected pieces (over the
+/// 1-rings) of points above tau whose 90th percentile stays below tau + margin are set to tau
+/// (low), pieces at or below tau whose 10th percentile stays above tau - margin are set just
+/// above it (high). Only the points of `points` are looked at.
+Eigen::VectorXd withoutNoiseIslands(const Eigen::VectorXd& curvature, double tau,
+                                    const RingNeighbourhoods& ring, const std::vector<int>& points,
+                                    double margin)
+{
+    Eigen::VectorXd result = curvature;
+    if (!(margin > 0.0)) {
+        return result;
+    }
+    const Eigen::Index n = curvature.size();
+    std::vector<char> inSet(static_cast<size_t>(n), 0);
+    for (int i : points) {
+        inSet[static_cast<size_t>(i)] = 1;
+    }
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    std::vector<int> piece, stack;
+    std::vector<double> values;
+    const double above = std::nextafter(tau, std::numeric_limits<double>::infinity());
+    for (int s : points) {
+        if (seen[static_cast<size_t>(s)]) {
+            continue;
+        }
+        const bool high = curvature[s] > tau;
+        piece.assign(1, s);
+        stack.assign(1, s);
+        seen[static_cast<size_t>(s)] = 1;
+        while (!stack.empty()) {
+            const int p = stack.back();
+            stack.pop_back();
+            for (const int* q = ring.begin(p); q != ring.end(p); ++q) {
+                if (inSet[static_cast<size_t>(*q)] && !seen[static_cast<size_t>(*q)] &&
+                    (curvature[*q] > tau) == high) {
+                    seen[static_cast<size_t>(*q)] = 1;
+                    piece.push_back(*q);
+                    stack.push_back(*q);
+                }
+            }
+        }
+        values.clear();
+        for (int p : piece) {
+            values.push_back(curvature[p]);
+        }
+        const size_t at = high ? values.size() * 9 / 10 : values.size() / 10;
+        std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at),
+                         values.end());
+        const double extreme = values[at];
+        if (high ? extreme < tau + margin : extreme > tau - margin) {
+            for (int p : piece) {
+                result[p] = high ? tau : above;
+            }
+        }
+    }
+    return result;
+}
+
+/// The median, over `points`, of the local contrast across threshold tau: among the points
+/// within two fit radii (two hops of the neighbourhoods), the median curvature of those above
+/// tau minus that of those at or below it. Points with neighbours on one side only count not.
+double medianLocalContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, double tau,
+                           const std::vector<int>& points)
+{
+    const Neighbourhoods& N = g.neighbours;
+    std::vector<double> contrasts(points.size(), std::numeric_limits<double>::quiet_NaN());
+#pragma omp parallel for schedule(dynamic, 16)
+    for (long s = 0; s < static_cast<long>(points.size()); ++s) {
+        const int p = points[static_cast<size_t>(s)];
+        const double reach2 = 4.0 * N.squaredDistances(p, N.k() - 1);
+        std::vector<int> near{p};
+        for (int j = 0; j < N.k(); ++j) {
+            const int q = N.indices(p, j);
+            near.push_back(q);
+            for (int l = 0; l < N.k(); ++l) {
+                near.push_back(N.indices(q, l));
+            }
+        }
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        std::vector<double> high, low;
+        for (int q : near) {
+            if ((g.points.row(q) - g.points.row(p)).squaredNorm() <= reach2) {
+                (curvature[q] > tau ? high : low).push_back(curvature[q]);
+            }
+        }
+        if (!high.empty() && !low.empty()) {
+            contrasts[static_cast<size_t>(s)] = median(std::move(high)) - median(std::move(low));
+        }
+    }
+    contrasts.erase(std::remove_if(contrasts.begin(), contrasts.end(),
+                                   [](double c) { return std::isnan(c); }),
+                    contrasts.end());
+    return contrasts.empty() ? 0.0 : median(std::move(contrasts));
 }
 
 /// The largest patch of curvature level (low, high]: points with values in it whose whole
@@ -424,44 +526,18 @@ std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polylin
     return anchored;
 }
 
-int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength)
+void dropLines(LineNetwork& network, std::vector<char>& anchored, const std::vector<char>& drop)
 {
-    if (!(minLength > 0.0)) {
-        return 0;
-    }
-    auto length = [](const Polyline& line) {
-        double sum = 0.0;
-        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
-            sum += (line.points.row(i) - line.points.row(i - 1)).norm();
-        }
-        return sum;
-    };
     std::vector<Polyline>& lines = network.lines;
-    std::vector<char> removed(lines.size(), 0);
-    int pruned = 0;
+    anchored.resize(2 * lines.size(), 0);
+    std::vector<char> removed = drop;
+    removed.resize(lines.size(), 0);
+    // Junctions left with fewer than three line ends: one end becomes an end on nothing (it
+    // ended on lines that are gone), two ends are one line through the point (a loop when
+    // both are the same line's). Merges can leave a line with both ends at one junction,
+    // hence the passes.
     for (bool changed = true; changed;) {
         changed = false;
-        // 1. Short lines from a junction to an end on nothing.
-        for (size_t l = 0; l < lines.size(); ++l) {
-            const Polyline& line = lines[l];
-            if (removed[l] || line.closed) {
-                continue;
-            }
-            const bool startFree = line.startJunction < 0 && !anchored[2 * l];
-            const bool endFree = line.endJunction < 0 && !anchored[2 * l + 1];
-            const bool dangling = (startFree && line.endJunction >= 0) ||
-                                  (endFree && line.startJunction >= 0);
-            if (dangling && length(line) < minLength) {
-                removed[l] = 1;
-                ++pruned;
-                changed = true;
-            }
-        }
-        if (!changed) {
-            break;
-        }
-        // 2. Junctions left with fewer than three line ends: one end becomes an end on nothing
-        // (it ended on lines that are gone), two ends are one line through the point.
         std::map<int, std::vector<std::pair<size_t, int>>> ends; // junction -> (line, 0|1)
         for (size_t l = 0; l < lines.size(); ++l) {
             if (removed[l] || lines[l].closed) {
@@ -475,63 +551,114 @@ int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double
             }
         }
         for (const auto& [junction, at] : ends) {
+            if (at.size() >= 3) {
+                continue;
+            }
             if (at.size() == 1) {
                 Polyline& line = lines[at[0].first];
                 (at[0].second == 0 ? line.startJunction : line.endJunction) = -1;
                 anchored[2 * at[0].first + static_cast<size_t>(at[0].second)] = 0;
+                continue;
             }
-            else if (at.size() == 2) {
-                auto [a, aEnd] = at[0];
-                auto [b, bEnd] = at[1];
-                if (a == b) {
-                    // Both ends of one line: a loop through the junction.
-                    Polyline& line = lines[a];
-                    if (line.points.rows() > 2) {
-                        line.points.conservativeResize(line.points.rows() - 1, 3);
-                    }
-                    line.closed = true;
-                    line.startJunction = line.endJunction = -1;
-                    continue;
-                }
-                // a ends at the junction, b starts there: a + b.
-                auto reverse = [&](size_t l) {
-                    Polyline& line = lines[l];
-                    line.points = line.points.colwise().reverse().eval();
-                    std::swap(line.startJunction, line.endJunction);
-                    std::swap(anchored[2 * l], anchored[2 * l + 1]);
-                };
-                if (aEnd == 0) {
-                    reverse(a);
-                }
-                if (bEnd == 1) {
-                    reverse(b);
-                }
-                Polyline& first = lines[a];
-                const Polyline& second = lines[b];
-                PointMatrix joined(first.points.rows() + second.points.rows() - 1, 3);
-                joined << first.points, second.points.bottomRows(second.points.rows() - 1);
-                first.points = std::move(joined);
-                first.endJunction = second.endJunction;
-                anchored[2 * a + 1] = anchored[2 * b + 1];
-                if (first.endJunction >= 0 && first.endJunction == first.startJunction) {
-                    // Handled as a loop in the next pass.
-                }
-                removed[b] = 1;
+            auto [a, aEnd] = at[0];
+            auto [b, bEnd] = at[1];
+            if (removed[a] || removed[b]) {
+                continue; // touched by a merge of this pass
             }
+            changed = true;
+            if (a == b) {
+                Polyline& line = lines[a];
+                if (line.points.rows() > 2) {
+                    line.points.conservativeResize(line.points.rows() - 1, 3);
+                }
+                line.closed = true;
+                line.startJunction = line.endJunction = -1;
+                continue;
+            }
+            // a ends at the junction, b starts there: a + b.
+            auto reverse = [&](size_t l) {
+                Polyline& line = lines[l];
+                line.points = line.points.colwise().reverse().eval();
+                std::swap(line.startJunction, line.endJunction);
+                std::swap(anchored[2 * l], anchored[2 * l + 1]);
+            };
+            if (aEnd == 0) {
+                reverse(a);
+            }
+            if (bEnd == 1) {
+                reverse(b);
+            }
+            Polyline& first = lines[a];
+            const Polyline& second = lines[b];
+            PointMatrix joined(first.points.rows() + second.points.rows() - 1, 3);
+            joined << first.points, second.points.bottomRows(second.points.rows() - 1);
+            first.points = std::move(joined);
+            first.endJunction = second.endJunction;
+            anchored[2 * a + 1] = anchored[2 * b + 1];
+            removed[b] = 1;
         }
     }
     std::vector<Polyline> kept;
     std::vector<char> keptAnchored;
+    std::map<int, int> newJunction;
     for (size_t l = 0; l < lines.size(); ++l) {
-        if (!removed[l]) {
-            kept.push_back(std::move(lines[l]));
-            keptAnchored.push_back(anchored[2 * l]);
-            keptAnchored.push_back(anchored[2 * l + 1]);
+        if (removed[l]) {
+            continue;
         }
+        Polyline line = std::move(lines[l]);
+        for (int* j : {&line.startJunction, &line.endJunction}) {
+            if (*j >= 0) {
+                *j = newJunction.emplace(*j, static_cast<int>(newJunction.size())).first->second;
+            }
+        }
+        kept.push_back(std::move(line));
+        keptAnchored.push_back(anchored[2 * l]);
+        keptAnchored.push_back(anchored[2 * l + 1]);
+    }
+    PointMatrix junctions(static_cast<Eigen::Index>(newJunction.size()), 3);
+    for (const auto& [old, now] : newJunction) {
+        junctions.row(now) = network.junctions.row(old);
     }
     lines = std::move(kept);
     anchored = std::move(keptAnchored);
-    return pruned;
+    network.junctions = std::move(junctions);
+}
+
+int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength)
+{
+    if (!(minLength > 0.0)) {
+        return 0;
+    }
+    anchored.resize(2 * network.lines.size(), 0);
+    int pruned = 0;
+    for (;;) {
+        // Short lines from a junction to an end on nothing.
+        std::vector<char> drop(network.lines.size(), 0);
+        int found = 0;
+        for (size_t l = 0; l < network.lines.size(); ++l) {
+            const Polyline& line = network.lines[l];
+            if (line.closed) {
+                continue;
+            }
+            const bool startFree = line.startJunction < 0 && !anchored[2 * l];
+            const bool endFree = line.endJunction < 0 && !anchored[2 * l + 1];
+            const bool dangling = (startFree && line.endJunction >= 0) ||
+                                  (endFree && line.startJunction >= 0);
+            double length = 0.0;
+            for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+                length += (line.points.row(i) - line.points.row(i - 1)).norm();
+            }
+            if (dangling && length < minLength) {
+                drop[l] = 1;
+                ++found;
+            }
+        }
+        if (found == 0) {
+            return pruned;
+        }
+        pruned += found;
+        dropLines(network, anchored, drop);
+    }
 }
 
 int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, double minLength)
@@ -747,7 +874,12 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
     SmoothEdgeLevel level;
     level.threshold = threshold;
-    level.labels = labelPoints(region.curvature, threshold, region.ring, points, options.labels);
+    // Islands of one side whose values stay within a few noise floors of tau are noise of
+    // the level around them, not patches: they join that level before the labels are drawn.
+    const Eigen::VectorXd curvature =
+        withoutNoiseIslands(region.curvature, threshold, region.ring, points,
+                            options.islandMargin * region.curvatureNoise);
+    level.labels = labelPoints(curvature, threshold, region.ring, points, options.labels);
     level.clusters = growLabelClusters(level.labels, region.ring, points, options.seed);
 
     // Sec. 3: the small clusters ring the patches; the graph of neighbouring small clusters
@@ -783,8 +915,36 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                                                  region.spacing, graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
-    std::vector<char> anchored = anchorLineEnds(
-        level.network, anchors, options.anchorReach * region.spacing, options.anchorAngle);
+    // A line must part two levels where it runs: across it, within two fit radii, the
+    // curvature on its high side must exceed that on its low side by minLineContrast noise
+    // floors (the median over the line's candidate points). The edge of a noise island, or a
+    // drifting curvature crossing tau, has about one floor across it.
+    std::vector<char> anchored;
+    if (options.minLineContrast > 0.0 && region.curvatureNoise > 0.0) {
+        std::vector<std::vector<int>> pointsOfNode(static_cast<size_t>(graph.nodes.rows()));
+        for (size_t i = 0; i < graph.nodeOfPoint.size(); ++i) {
+            if (graph.nodeOfPoint[i] >= 0) {
+                pointsOfNode[static_cast<size_t>(graph.nodeOfPoint[i])].push_back(
+                    static_cast<int>(i));
+            }
+        }
+        std::vector<char> weak(level.network.lines.size(), 0);
+        for (size_t l = 0; l < graph.lineNodes.size() && l < weak.size(); ++l) {
+            std::vector<int> linePoints;
+            for (int v : graph.lineNodes[l]) {
+                if (v >= 0 && v < static_cast<int>(pointsOfNode.size())) {
+                    const auto& ps = pointsOfNode[static_cast<size_t>(v)];
+                    linePoints.insert(linePoints.end(), ps.begin(), ps.end());
+                }
+            }
+            const double contrast = medianLocalContrast(region, curvature, threshold, linePoints);
+            weak[l] = contrast < options.minLineContrast * region.curvatureNoise;
+        }
+        level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));
+        dropLines(level.network, anchored, weak);
+    }
+    anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
+                              options.anchorAngle);
     const double minOpen = options.graph.minOpenComponentLength * region.spacing;
     level.counts.prunedBranches += pruneDanglingLines(level.network, anchored, minOpen);
     level.counts.droppedComponents += dropOpenPieces(level.network, anchored, minOpen);
@@ -875,14 +1035,19 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
             labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
         d.innerPoints = static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
         d.straddle =
-            straddleShare(region, labels, a.straddleSamples, range.patchLow, range.patchHigh);
+            straddleShare(region, labels, a.straddleSamples, range.patchLow, range.patchHigh,
+                          a.straddleReach);
         d.largestPatch = largestPatch(region.curvature, tau, range.patchHigh, region.ring);
         d.largestPatchBelow = largestPatch(region.curvature, range.patchLow, tau, region.ring);
         const bool patch = d.largestPatch >= minInner;
         const bool patchBelow = d.largestPatchBelow >= minInner;
         const bool levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
                             d.straddle <= a.maxStraddle;
-        d.accepted = d.result.ratio >= a.minRatio && patch && patchBelow && levels;
+        // The valley must follow a peak of a patch's worth of values: e = b1 / b2 of a few
+        // stray values before an empty bin (b2 = 0) is no valley.
+        const bool valley =
+            d.result.ratio >= a.minRatio && d.result.peakCount >= static_cast<long>(minInner);
+        d.accepted = valley && patch && patchBelow && levels;
         decisions.push_back(d);
         if (d.accepted) {
             ++accepted;

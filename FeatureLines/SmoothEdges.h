@@ -36,7 +36,8 @@ enum class SmoothingMode
 /// stops when maxThresholds are accepted or maxSearches weighed.
 /// A threshold is significant when all of these hold, the patches being the values between
 /// the nearest accepted thresholds below and above it:
-///  - its valley ratio e(tau) = b1 / b2 is at least minRatio (a peak, then a valley);
+///  - its valley ratio e(tau) = b1 / b2 is at least minRatio (a peak, then a valley), and
+///    the peak b1 holds at least minInnerPoints values (a patch's worth);
 ///  - the levels above and below it each hold a patch: a connected cluster of at least
 ///    minInnerPoints points of the level whose whole 1-ring lies in the level (the inner
 ///    points of Sec. 3). Scattered noise above a threshold in a peak's tail is no patch, nor
@@ -60,9 +61,11 @@ struct AutomaticThresholdOptions
     double minRatio = 2.0;
     /// 0: 2 k, two neighbourhoods' worth of points.
     int minInnerPoints = 0;
-    /// A fillet (cylinder, |H| = 1 / 2r) against the corner that joins it (sphere, 1 / r) has
-    /// contrast 2; 1.6 leaves room for the blur of the curvature across the tangent line.
-    double minContrast = 1.6;
+    /// A fillet (cylinder, |H| = 1 / 2r) against the corner that joins it has contrast 2 for
+    /// a spherical corner and 1 + r / R for a toroidal one (tube r, ring radius R, at most
+    /// about 3 r): 1.3 keeps both, and refuses one level split by its round-off (a clean
+    /// cylinder's values spread by a few percent). Drifting levels are the straddle rule's.
+    double minContrast = 1.3;
     /// x spacing. Over a neighbourhood of radius 2.5 spacings a sphere of radius 200 spacings
     /// departs from its tangent plane by 0.016 spacing, below any scanner's noise.
     double flatRadius = 200.0;
@@ -88,6 +91,9 @@ struct AutomaticThresholdOptions
     /// shifted onto the slope when the level above drifts (a variable-radius fillet split
     /// along its length). Half: a patch's border may meet other levels at its ends.
     double maxStraddle = 0.5;
+    /// x the fit radius (the k-th neighbour's distance): how far from a border point a level
+    /// outside the two patches counts as straddled.
+    double straddleReach = 2.0;
 };
 
 /// The flat patch on which the curvature noise floor is measured (RegionGeometry::
@@ -134,6 +140,19 @@ struct SmoothEdgeOptions
     /// smoothed (noisy) region, none for a clean one (Sec. 2.4: outliers come with noise).
     ThresholdOptions histogram{50, -1.0};
     LabelOptions labels;
+    /// In curvature noise floors (RegionGeometry::curvatureNoise): a connected piece of points
+    /// above tau whose values (their 90th percentile) stay within this of tau is noise of the
+    /// level below, and joins it; likewise a piece below tau within this of it joins the level
+    /// above. A patch of the level above lies at least minSeparation / 2 = 2 floors above tau;
+    /// noise lifts a level 2 floors below tau past tau in 2 % of its points, in islands whose
+    /// values mostly stay within a floor of tau.
+    double islandMargin = 1.5;
+    /// In curvature noise floors: a line whose high side (within two fit radii, the median over
+    /// its points) exceeds its low side by less than this is dropped before the line ends are
+    /// processed. A level difference of minSeparation (4) floors, blurred over about two fit
+    /// radii, leaves about half of it across the line; the edge of a noise island, or a
+    /// curvature that only drifts through tau, leaves about one floor.
+    double minLineContrast = 2.0;
     /// Sec. 3: "small clusters" are the clusters of at most this many points (the single
     /// points met at a label change).
     int maxCandidateClusterSize = 1;
@@ -224,6 +243,12 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
 /// the anchor lines. Returns per line two flags, start and end: anchored.
 std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
                                  double reach, double maxAngleDegrees);
+
+/// Removes the lines flagged in `drop`; a junction left with two line ends joins them into one
+/// line (a loop when both are the same line's), left with one, that end is on nothing.
+/// Junctions are renumbered; `anchored` (two flags per line, see anchorLineEnds; empty: none)
+/// follows the lines.
+void dropLines(LineNetwork& network, std::vector<char>& anchored, const std::vector<char>& drop);
 
 /// Removes the lines shorter than minLength that run from a junction to an end on nothing
 /// (neither a junction nor, by the `anchored` flags, an anchor line): spurs noise grows off a
