@@ -49,7 +49,11 @@ enum class SmoothingMode
 ///    of a flat face (all ~0) never make a contrast;
 ///  - c_above - c_below is at least minSeparation curvature noise floors
 ///    (RegionGeometry::curvatureNoise): the two levels are farther apart than noise spreads
-///    one level.
+///    one level;
+///  - at most maxStraddle of the border points at tau lie near a level outside the two
+///    patches: the level above is bordered by the level below, not by the slope down to a
+///    third level (a curvature drifting along a fillet).
+/// Accepted thresholds are applied in the middle of their valleys (centreThresholds).
 struct AutomaticThresholdOptions
 {
     int maxThresholds = 3;
@@ -127,9 +131,9 @@ struct SmoothEdgeOptions
     /// (over normals oriented alike), so a flat face's noise, of either sign, cancels instead
     /// of adding up. Each pass spreads a curvature step over one more neighbourhood radius,
     /// symmetrically about the tangent line; two passes halve the noise floor of a region
-    /// smoothed from 0.3 spacing of noise (RegionGeometry::curvatureNoise, 0.013 -> 0.0045 per
-    /// spacing against none) and leave a flat of 6 spacings between two fillets its own
-    /// level (2 x 2.5 spacings of blur).
+    /// smoothed from 0.3 spacing of noise (RegionGeometry::curvatureNoise, 0.0098 -> 0.0047
+    /// per spacing) and leave a flat of 6 spacings between two fillets its own level
+    /// (2 x 2.5 spacings of blur); a third pass would gain a fifth more and merge it.
     int curvatureAveragingPasses = 2;
     /// Points sampled for the noise estimate (every n-th point so that at most this many are
     /// fitted; 0: all). The estimate is a median, which 20 000 samples fix to within 1 %.
@@ -228,9 +232,11 @@ struct SmoothEdgeLevel
 };
 
 /// Sec. 3 at threshold tau over the whole region, or over `subset` (region point indices)
-/// only, as the multi-step refinement does. Free line ends are anchored on the `anchors`
-/// (the sharp and boundary lines around the region, see anchorLineEnds); open pieces shorter
-/// than options.graph.minOpenComponentLength with a free end left are then dropped.
+/// only, as the multi-step refinement does. Noise islands are levelled before the labels
+/// (SmoothEdgeOptions::islandMargin); lines without contrast across them are dropped
+/// (minLineContrast); free line ends are anchored on the `anchors` (the sharp and boundary
+/// lines around the region, see anchorLineEnds); short spurs and open pieces shorter than
+/// options.graph.minOpenComponentLength with an end on nothing are then dropped.
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options = {},
                                        const std::vector<int>& subset = {},
