@@ -81,7 +81,8 @@ double median(std::vector<double> v)
 
 /// The middle of the valley that starts at a threshold: Sec. 2.2 puts tau right after the peak
 /// b1 (the end of its run of k bins), where the valley starts; the valley ends where the
-/// histogram rises to the next peak: k bins holding twice the valley's b2 and at least
+/// histogram rises to the next peak: k bins holding twice the valley's floor so far (the least
+/// k bins from b2 on; b2 itself may still lie on the lower peak's slope) and at least
 /// minPeakPercent of the values (the least peak Sec. 2.2 may follow). Where no such rise
 /// follows (a noisy valley whose next level is a low plateau, or the top of the histogram),
 /// tau stays: there the lower peak's noise tail already reaches to the middle. The
@@ -100,8 +101,9 @@ double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
     const int first = static_cast<int>(std::lround((t.threshold - h.minimum) / h.binWidth));
     const double values = static_cast<double>(
         std::accumulate(h.counts.begin(), h.counts.end(), 0L));
-    const double rise = std::max({2.0 * static_cast<double>(t.valleyCount),
-                                  minPeakPercent / 100.0 * values, 1.0});
+    const double minPeak = std::max(minPeakPercent / 100.0 * values, 1.0);
+    // The valley's floor so far: the least of its windows of k bins, from b2 at its start on.
+    double floor = static_cast<double>(t.valleyCount);
     double end = t.threshold;
     for (int j = std::max(first, 0); j < L; ++j) {
         const int last = std::min(L, j + k);
@@ -109,10 +111,12 @@ double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
         for (int b = j; b < last; ++b) {
             count += static_cast<double>(h.counts[b]);
         }
-        if (count * k / (last - j) > rise) {
+        count *= static_cast<double>(k) / (last - j);
+        if (count > std::max(2.0 * floor, minPeak)) {
             end = h.minimum + j * h.binWidth;
             break;
         }
+        floor = std::min(floor, count);
     }
     return 0.5 * (t.threshold + std::max(end, t.threshold));
 }
