@@ -47,7 +47,8 @@ PointMatrix distinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
     // Keep the input order among distinct points: renumber by first occurrence.
     std::vector<int> byInput(firstOf.size());
     std::iota(byInput.begin(), byInput.end(), 0);
-    std::sort(byInput.begin(), byInput.end(), [&](int a, int b) { return firstOf[a] < firstOf[b]; });
+    std::sort(byInput.begin(), byInput.end(),
+              [&](int a, int b) { return firstOf[a] < firstOf[b]; });
     std::vector<int> rank(firstOf.size());
     PointMatrix distinct(static_cast<Eigen::Index>(firstOf.size()), 3);
     for (size_t r = 0; r < byInput.size(); ++r) {
@@ -64,7 +65,8 @@ void requireSurface(const PointMatrix& P)
 {
     const Eigen::RowVector3d mean = P.colwise().mean();
     const PointMatrix centred = P.rowwise() - mean;
-    const Eigen::Matrix3d covariance = centred.transpose() * centred / static_cast<double>(P.rows());
+    const Eigen::Matrix3d covariance =
+        centred.transpose() * centred / static_cast<double>(P.rows());
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance, Eigen::EigenvaluesOnly);
     const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
     if (!(lambda[2] > 0.0) || lambda[1] <= 1e-12 * lambda[2]) {
@@ -107,8 +109,7 @@ std::vector<double> regionThresholdList(const RegionGeometry& g, const Extractio
     case ThresholdMode::First:
         try {
             thresholds.push_back(regionThreshold(g, options.smooth).threshold);
-        }
-        catch (const std::invalid_argument&) {
+        } catch (const std::invalid_argument&) {
             // A region of one curvature value (a plane) has no threshold: no smooth edges.
         }
         break;
@@ -218,14 +219,13 @@ RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOption
     if (options.sharpEdges) {
         a.sharp = extractSharpEdges(cloud.points, cloud.normals.normals, cloud.neighbours,
                                     cloud.spacing, options.sharp);
-    }
-    else {
+    } else {
         a.sharp.isSharpCandidate.assign(static_cast<size_t>(n), 0);
         a.sharp.isBoundary.assign(static_cast<size_t>(n), 0);
         if (options.sharp.includeBoundary) {
-            const Boundary b = extractBoundary(cloud.points, cloud.normals.normals,
-                                               cloud.neighbours, cloud.spacing,
-                                               options.sharp.boundary);
+            const Boundary b =
+                extractBoundary(cloud.points, cloud.normals.normals, cloud.neighbours,
+                                cloud.spacing, options.sharp.boundary);
             a.sharp.network = b.network;
             for (Polyline& line : a.sharp.network.lines) {
                 line.label = boundaryLineLabel;
@@ -270,7 +270,8 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
     std::vector<int> region(static_cast<size_t>(n), -1);
     std::vector<int> patch(static_cast<size_t>(n), -1);
     std::vector<PointLabel> label(static_cast<size_t>(n), PointLabel::Outside);
-    Eigen::VectorXd curvature = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+    Eigen::VectorXd curvature =
+        Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
     int patches = 0;
     for (size_t r = 0; r < analysis.geometry.size(); ++r) {
         const RegionGeometry& g = analysis.geometry[r];
@@ -283,8 +284,7 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
         rr.smoothed = g.smoothed;
         try {
             rr.histogram = regionThreshold(g, options.smooth).histogram;
-        }
-        catch (const std::invalid_argument&) {
+        } catch (const std::invalid_argument&) {
             // One curvature value only: an empty histogram tells the user there is no valley.
         }
         rr.thresholds = regionThresholdList(g, options, rr);

@@ -77,9 +77,7 @@ struct ExtractionOptions
 
 struct ExtractionCancelled : std::runtime_error
 {
-    ExtractionCancelled()
-        : std::runtime_error("the feature line extraction was cancelled")
-    {}
+    ExtractionCancelled() : std::runtime_error("the feature line extraction was cancelled") {}
 };
 
 /// The geometry every extraction of one cloud shares, whatever its thresholds: computed once

@@ -36,7 +36,8 @@ std::vector<PointLabel> labelPoints(const Eigen::VectorXd& curvature, double thr
 {
     const Eigen::Index n = curvature.size();
     if (static_cast<Eigen::Index>(ring.offsets.size()) != n + 1) {
-        throw std::invalid_argument("labelPoints: curvature and ring neighbourhoods differ in size");
+        throw std::invalid_argument(
+            "labelPoints: curvature and ring neighbourhoods differ in size");
     }
     if (options.minInnerNeighbours < 1) {
         throw std::invalid_argument("labelPoints: minInnerNeighbours must be at least 1");
@@ -88,7 +89,8 @@ LabelClusters growLabelClusters(const std::vector<PointLabel>& labels,
 {
     const auto n = static_cast<Eigen::Index>(labels.size());
     if (static_cast<Eigen::Index>(ring.offsets.size()) != n + 1) {
-        throw std::invalid_argument("growLabelClusters: labels and ring neighbourhoods differ in size");
+        throw std::invalid_argument(
+            "growLabelClusters: labels and ring neighbourhoods differ in size");
     }
     LabelClusters result;
     result.cluster.assign(labels.size(), -1);
@@ -131,8 +133,7 @@ LabelClusters growLabelClusters(const std::vector<PointLabel>& labels,
                     result.cluster[*q] = id;
                     ++result.size[id];
                     stack.push_back(*q);
-                }
-                else {
+                } else {
                     // A label change: the met point becomes a single-point cluster.
                     newCluster(*q, growthLabel(labels[*q]));
                 }

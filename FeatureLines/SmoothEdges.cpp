@@ -45,8 +45,7 @@ std::vector<double> valuesOf(const RegionGeometry& region, const std::vector<int
     std::vector<double> values;
     if (subset.empty()) {
         values.assign(region.curvature.data(), region.curvature.data() + region.curvature.size());
-    }
-    else {
+    } else {
         values.reserve(subset.size());
         for (int i : subset) {
             values.push_back(region.curvature[i]);
@@ -99,8 +98,8 @@ double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
         return t.threshold;
     }
     const int first = static_cast<int>(std::lround((t.threshold - h.minimum) / h.binWidth));
-    const double values = static_cast<double>(
-        std::accumulate(h.counts.begin(), h.counts.end(), 0L));
+    const double values =
+        static_cast<double>(std::accumulate(h.counts.begin(), h.counts.end(), 0L));
     const double minPeak = std::max(minPeakPercent / 100.0 * values, 1.0);
     // The valley's floor so far: the least of its windows of k bins, from b2 at its start on.
     double floor = static_cast<double>(t.valleyCount);
@@ -122,10 +121,10 @@ double valleyMiddle(const ThresholdResult& t, double minPeakPercent)
 }
 
 /// The share of the border points of a labelling (at most `samples` of them, evenly strided)
-/// that have a point of curvature at most `low` or above `high` within two fit radii
-/// (gathered over two hops of the neighbourhoods).
-double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& labels,
-                     int samples, double low, double high, double reach)
+/// that have a point of curvature at most `low` or above `high` within `reach` fit radii
+/// (the k-th neighbour's distance; found breadth first over the neighbourhoods).
+double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& labels, int samples,
+                     double low, double high, double reach)
 {
     std::vector<int> border;
     for (size_t i = 0; i < labels.size(); ++i) {
@@ -256,9 +255,9 @@ double medianLocalContrast(const RegionGeometry& g, const Eigen::VectorXd& curva
             contrasts[static_cast<size_t>(s)] = median(std::move(high)) - median(std::move(low));
         }
     }
-    contrasts.erase(std::remove_if(contrasts.begin(), contrasts.end(),
-                                   [](double c) { return std::isnan(c); }),
-                    contrasts.end());
+    contrasts.erase(
+        std::remove_if(contrasts.begin(), contrasts.end(), [](double c) { return std::isnan(c); }),
+        contrasts.end());
     return contrasts.empty() ? 0.0 : median(std::move(contrasts));
 }
 
@@ -374,8 +373,9 @@ double curvatureNoiseFloor(double noise, int k, bool smoothed, const SmoothEdgeO
     const double level = std::max(noise, 0.01);
     const int step = static_cast<int>(std::lround(std::log(level) / std::log(1.05)));
     using Key = std::tuple<int, bool, int, double, double, int, int, int, int, unsigned>;
-    const Key key{k,       smoothed, so.iterations, so.lambda,   so.mu,
-                  averaging, options.curvature.k, step, sn.patchSide, sn.seed};
+    const Key key{
+        k,    smoothed,     so.iterations, so.lambda, so.mu, averaging, options.curvature.k,
+        step, sn.patchSide, sn.seed};
     static std::mutex mutex;
     static std::map<Key, double> cache;
     double perNoise = 0.0;
@@ -519,8 +519,7 @@ std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polylin
             PointMatrix extended(line.points.rows() + 1, 3);
             if (atEnd) {
                 extended << line.points, q;
-            }
-            else {
+            } else {
                 extended << q, line.points;
             }
             line.points = std::move(extended);
@@ -646,8 +645,8 @@ int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double
             }
             const bool startFree = line.startJunction < 0 && !anchored[2 * l];
             const bool endFree = line.endJunction < 0 && !anchored[2 * l + 1];
-            const bool dangling = (startFree && line.endJunction >= 0) ||
-                                  (endFree && line.startJunction >= 0);
+            const bool dangling =
+                (startFree && line.endJunction >= 0) || (endFree && line.startJunction >= 0);
             double length = 0.0;
             for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
                 length += (line.points.row(i) - line.points.row(i - 1)).norm();
@@ -725,8 +724,8 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
     std::vector<char> keepPiece(lineCount, 0);
     for (auto& [id, p] : pieces) {
         std::sort(p.junctions.begin(), p.junctions.end());
-        const auto junctions = std::unique(p.junctions.begin(), p.junctions.end()) -
-                               p.junctions.begin();
+        const auto junctions =
+            std::unique(p.junctions.begin(), p.junctions.end()) - p.junctions.begin();
         // A tree of E lines has E + 1 end nodes (junctions and loose ends); more lines than
         // that close a cycle.
         const bool cycle = p.closedLine || p.openLines >= junctions + p.looseEnds;
@@ -824,8 +823,9 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
     }
     g.normals = pcaNormals(g.points, g.neighbours).normals;
     g.noise = estimateNoise(g.points, g.normals, g.neighbours, spacing, options.noiseSamples);
-    g.smoothed = options.smoothing == SmoothingMode::Always ||
-                 (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
+    g.smoothed =
+        options.smoothing == SmoothingMode::Always ||
+        (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
     if (g.smoothed) {
         // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
         // cannot round them off.
@@ -834,9 +834,9 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         g.normals = pcaNormals(g.points, g.neighbours).normals;
     }
     g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
-    g.curvature = regionCurvature(g.points, g.normals, g.neighbours,
-                                  g.smoothed ? options.curvatureAveragingPasses : 0,
-                                  options.curvature);
+    g.curvature =
+        regionCurvature(g.points, g.normals, g.neighbours,
+                        g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
     g.curvatureNoise =
         curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / spacing;
     return g;
@@ -902,8 +902,8 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                 candidatePoints.push_back(i);
             }
         }
-        const std::vector<char> near = pointsNearLines(
-            region.points, candidatePoints, anchors, options.anchorBand * region.spacing);
+        const std::vector<char> near = pointsNearLines(region.points, candidatePoints, anchors,
+                                                       options.anchorBand * region.spacing);
         for (size_t j = 0; j < candidatePoints.size(); ++j) {
             if (near[j]) {
                 candidate[level.clusters.cluster[candidatePoints[j]]] = 0;
@@ -914,9 +914,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     // (a fillet border running from one sharp edge to another is short but complete).
     ClusterGraphOptions graphOptions = options.graph;
     graphOptions.minOpenComponentLength = 0.0;
-    const ClusterGraph graph = buildClusterGraph(region.points, region.neighbours,
-                                                 level.clusters.cluster, candidate,
-                                                 region.spacing, graphOptions);
+    const ClusterGraph graph =
+        buildClusterGraph(region.points, region.neighbours, level.clusters.cluster, candidate,
+                          region.spacing, graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
     // A line must part two levels where it runs: across it, within two fit radii, the
@@ -1014,8 +1014,7 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         ThresholdDecision d;
         try {
             d.result = findThreshold(values, h);
-        }
-        catch (const std::invalid_argument&) {
+        } catch (const std::invalid_argument&) {
             continue; // too few distinct values in this range: nothing to split
         }
         const double tau =
@@ -1037,10 +1036,10 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                            : infinity;
         const std::vector<PointLabel> labels =
             labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
-        d.innerPoints = static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
-        d.straddle =
-            straddleShare(region, labels, a.straddleSamples, range.patchLow, range.patchHigh,
-                          a.straddleReach);
+        d.innerPoints =
+            static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
+        d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
+                                   range.patchHigh, a.straddleReach);
         d.largestPatch = largestPatch(region.curvature, tau, range.patchHigh, region.ring);
         d.largestPatchBelow = largestPatch(region.curvature, range.patchLow, tau, region.ring);
         const bool patch = d.largestPatch >= minInner;
@@ -1058,18 +1057,15 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
             // Searched next: the higher values first, then the lower (Sec. 2.3 offers both).
             ranges.push_back({range.patchLow, tau, range.patchLow, tau, false, 0});
             ranges.push_back({tau, searchHigh, tau, range.patchHigh, false, 0});
-        }
-        else if (range.misses >= a.maxMisses) {
+        } else if (range.misses >= a.maxMisses) {
             continue;
-        }
-        else if (!patch) {
+        } else if (!patch) {
             // No patch above tau: the valley found lies above the highest patch of the range
             // (e.g. after a fillet peak at the top of the histogram); the patches' own valley
             // is lower down (Sec. 2.3, "lower threshold").
-            ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh,
-                              false, range.misses + 1});
-        }
-        else if (!levels || !patchBelow) {
+            ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh, false,
+                              range.misses + 1});
+        } else if (!levels || !patchBelow) {
             // tau splits one curvature level in two (a peak and its own noise tail), or cuts
             // the transition between two levels short of the lower one; a second level, if
             // any, lies higher up (Sec. 4, Fig. 9 a: "the desired threshold is located after

@@ -303,7 +303,8 @@ struct ThresholdDecision
 
 /// The automatic mode (see AutomaticThresholdOptions): every threshold searched, in the order
 /// searched, with its decision. The accepted ones' applied values, sorted from high to low,
-/// are the region's thresholds. A region with no significant valley (a plane, a sphere) accepts none.
+/// are the region's thresholds. A region with no significant valley (a plane, a sphere) accepts
+/// none.
 std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options = {});
 

@@ -15,8 +15,7 @@ namespace {
 class LineBand
 {
 public:
-    LineBand(const std::vector<Polyline>& lines, double width)
-        : width_(width)
+    LineBand(const std::vector<Polyline>& lines, double width) : width_(width)
     {
         const double step = 0.5 * width;
         for (const Polyline& line : lines) {
@@ -94,10 +93,12 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
 {
     const Eigen::Index n = P.rows();
     if (N.size() != n) {
-        throw std::invalid_argument("divideSmoothRegions: points and neighbourhoods differ in size");
+        throw std::invalid_argument(
+            "divideSmoothRegions: points and neighbourhoods differ in size");
     }
     if (!sharpCandidate.empty() && static_cast<Eigen::Index>(sharpCandidate.size()) != n) {
-        throw std::invalid_argument("divideSmoothRegions: points and candidate flags differ in size");
+        throw std::invalid_argument(
+            "divideSmoothRegions: points and candidate flags differ in size");
     }
     if (!(spacing > 0.0) || !std::isfinite(spacing)) {
         throw std::invalid_argument("divideSmoothRegions: the point spacing must be positive");
@@ -206,7 +207,8 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
                                     const std::vector<int>& members, int regionId)
 {
     if (static_cast<Eigen::Index>(region.size()) != N.size()) {
-        throw std::invalid_argument("regionNeighbourhoods: region labels and neighbourhoods differ in size");
+        throw std::invalid_argument(
+            "regionNeighbourhoods: region labels and neighbourhoods differ in size");
     }
     std::unordered_map<int, int> local;
     local.reserve(members.size() * 2);
@@ -229,7 +231,8 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
             }
         }
         if (filled == 0) {
-            throw std::invalid_argument("regionNeighbourhoods: a region point has no neighbour in its region");
+            throw std::invalid_argument(
+                "regionNeighbourhoods: a region point has no neighbour in its region");
         }
         // Sec. 2.1 fits over k neighbours; repeating the nearest in-region ones keeps the
         // row shape and only re-weights a point whose neighbourhood the band cut.

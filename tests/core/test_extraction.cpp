@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <limits>
+#include <random>
 #include <set>
 
 #include "FeatureLines/Extraction.h"
@@ -66,8 +66,7 @@ TEST(Extraction, CubeGivesTwelveSharpEdgesEnclosingSixFaces)
 // Sec. 2.3, Fig. 7 b: planes | fillets | corners, two thresholds; at the first a closed loop
 // around each of the 8 spherical corners, at the second around each of the 6 flat faces, every
 // vertex within `tolerance` of its tangent line.
-void expectRoundedCubeLoops(const ExtractionResult& r, double edge, double radius,
-                            double tolerance)
+void expectRoundedCubeLoops(const ExtractionResult& r, double edge, double radius, double tolerance)
 {
     EXPECT_EQ(r.countLines(LineType::Sharp), 0) << "fillets of radius 12 spacings are smooth";
     ASSERT_EQ(r.regions.size(), 1u);
@@ -140,13 +139,11 @@ shapes::Sample ribCap(double w, double r, double wall, double length, double h, 
             int part;
             if (t <= w / 2) {
                 x = t, z = 0, nx = 0, nz = 1, part = 0;
-            }
-            else if (t <= w / 2 + arc) {
+            } else if (t <= w / 2 + arc) {
                 const double phi = (t - w / 2) / r; // 0 at the top, pi/2 at the wall
                 nx = std::sin(phi), nz = std::cos(phi);
                 x = w / 2 + r * nx, z = -r + r * nz, part = 1;
-            }
-            else {
+            } else {
                 x = w / 2 + r, z = -r - (t - w / 2 - arc), nx = 1, nz = 0, part = 2;
             }
             const int p = j * nu + i;
@@ -313,8 +310,7 @@ TEST(Extraction, BadCloudsAreRefusedWithAMessage)
     auto message = [](const PointMatrix& P) -> std::string {
         try {
             extractFeatureLines(P);
-        }
-        catch (const std::invalid_argument& e) {
+        } catch (const std::invalid_argument& e) {
             return e.what();
         }
         return "";

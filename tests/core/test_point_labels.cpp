@@ -49,7 +49,10 @@ Lattice discLattice()
     return l;
 }
 
-bool interior(const Lattice& l, int p) { return l.latticeNeighbours[p].size() == 6; }
+bool interior(const Lattice& l, int p)
+{
+    return l.latticeNeighbours[p].size() == 6;
+}
 
 } // namespace
 
@@ -57,7 +60,8 @@ TEST(PointLabels, DiscOnLatticeGivesInnerCoreRingedByBorderPoints)
 {
     const Lattice l = discLattice();
     const Neighbourhoods N = nearestNeighbours(l.points, {12});
-    const RingNeighbourhoods ring = ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
+    const RingNeighbourhoods ring =
+        ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
     std::vector<int> region(l.points.rows());
     for (int i = 0; i < static_cast<int>(region.size()); ++i) {
         region[i] = i;
@@ -103,7 +107,8 @@ TEST(PointLabels, GrowingGivesOneLowOneInnerClusterAndSingleBorderPoints)
 {
     const Lattice l = discLattice();
     const Neighbourhoods N = nearestNeighbours(l.points, {12});
-    const RingNeighbourhoods ring = ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
+    const RingNeighbourhoods ring =
+        ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
     std::vector<int> region(l.points.rows());
     for (int i = 0; i < static_cast<int>(region.size()); ++i) {
         region[i] = i;
@@ -117,11 +122,9 @@ TEST(PointLabels, GrowingGivesOneLowOneInnerClusterAndSingleBorderPoints)
             const int id = c.cluster[p];
             if (labels[p] == PointLabel::Border) {
                 EXPECT_EQ(c.size[id], 1) << "a border point is a single-point cluster";
-            }
-            else if (labels[p] == PointLabel::Inner && c.size[id] > 1) {
+            } else if (labels[p] == PointLabel::Inner && c.size[id] > 1) {
                 innerClusters.insert(id);
-            }
-            else if (c.size[id] > 1) {
+            } else if (c.size[id] > 1) {
                 lowClusters.insert(id);
                 EXPECT_EQ(c.label[id], PointLabel::Low);
             }
@@ -136,7 +139,8 @@ TEST(PointLabels, PointsOutsideTheRegionAreNeitherLabelledNorClustered)
 {
     const Lattice l = discLattice();
     const Neighbourhoods N = nearestNeighbours(l.points, {12});
-    const RingNeighbourhoods ring = ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
+    const RingNeighbourhoods ring =
+        ringNeighbourhoods(l.points, pcaNormals(l.points, N).normals, N);
     std::vector<int> leftHalf;
     for (int p = 0; p < l.points.rows(); ++p) {
         if (l.points(p, 0) < 15.0) {

@@ -161,8 +161,7 @@ TEST(SmoothEdges, ValleyAboveTheTopPatchSendsTheSearchBelow)
         if (std::fmod(x * 7.0 + y * 13.0, 50.0) < 0.5) {
             return 0.3;
         }
-        return x < 40.0 ? step(x, 25.0 + wave, 0.0, 0.1, 4.0)
-                        : step(x, 55.0 + wave, 0.1, 0.0, 4.0);
+        return x < 40.0 ? step(x, 25.0 + wave, 0.0, 0.1, 4.0) : step(x, 55.0 + wave, 0.1, 0.0, 4.0);
     });
     const std::vector<ThresholdDecision> d = automaticThresholds(g);
     ASSERT_GE(d.size(), 2u);
@@ -224,10 +223,13 @@ TEST(SmoothEdges, LevelsCloserThanFourNoiseFloorsAreOne)
             v = floor * noise(rng);
         }
         int next = 0;
-        const RegionGeometry g = latticeRegion(60, 60, [&](double x, double) {
-            const double inStrip = x > 20.0 && x < 40.0 ? level : 0.0;
-            return std::abs(inStrip + draws[static_cast<size_t>(next++)]);
-        }, floor);
+        const RegionGeometry g = latticeRegion(
+            60, 60,
+            [&](double x, double) {
+                const double inStrip = x > 20.0 && x < 40.0 ? level : 0.0;
+                return std::abs(inStrip + draws[static_cast<size_t>(next++)]);
+            },
+            floor);
         const size_t expected = level > 4 * floor ? 1u : 0u;
         EXPECT_EQ(accepted(automaticThresholds(g)).size(), expected) << "level " << level;
     }
@@ -236,8 +238,8 @@ TEST(SmoothEdges, LevelsCloserThanFourNoiseFloorsAreOne)
 TEST(SmoothEdges, FreeEndsAreAnchoredOnTheLineAheadOnly)
 {
     LineNetwork network;
-    network.lines.push_back(straight({0, 0, 0}, {10, 0, 0}));   // heads for x = 13
-    network.lines.push_back(straight({0, 20, 0}, {10, 20, 0})); // too far: 12 away
+    network.lines.push_back(straight({0, 0, 0}, {10, 0, 0}));     // heads for x = 13
+    network.lines.push_back(straight({0, 20, 0}, {10, 20, 0}));   // too far: 12 away
     network.lines.push_back(straight({14, -10, 0}, {14, -4, 0})); // beside the anchor's end
     const std::vector<Polyline> anchors{straight({13, -2, 0}, {13, 8, 0}),
                                         straight({30, 5, 0}, {30, 6, 0})};
@@ -261,13 +263,15 @@ TEST(SmoothEdges, ShortSpursArePrunedAndTheirLoopClosed)
     LineNetwork network;
     network.junctions.resize(1, 3);
     network.junctions.row(0) << 0, 0, 0;
-    network.lines.push_back(line({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 0}}, 0, 0));
+    network.lines.push_back(
+        line({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 0}}, 0, 0));
     network.lines.push_back(straight({0, 0, 0}, {-4, 0, 0}, 0, -1));
     std::vector<char> anchored(4, 0);
     EXPECT_EQ(pruneDanglingLines(network, anchored, 15.0), 1);
     ASSERT_EQ(network.lines.size(), 1u);
     EXPECT_TRUE(network.lines[0].closed);
-    EXPECT_EQ(network.lines[0].points.rows(), 4) << "a closed line does not repeat its first vertex";
+    EXPECT_EQ(network.lines[0].points.rows(), 4)
+        << "a closed line does not repeat its first vertex";
     EXPECT_EQ(network.lines[0].startJunction, -1);
 
     // The same spur anchored on another line is part of the network: kept.
@@ -283,8 +287,8 @@ TEST(SmoothEdges, ShortSpursArePrunedAndTheirLoopClosed)
 TEST(SmoothEdges, ShortOpenPiecesGoUnlessBothEndsAreOnLines)
 {
     LineNetwork network;
-    network.lines.push_back(straight({0, 0, 0}, {10, 0, 0}));  // short, free: dropped
-    network.lines.push_back(straight({0, 5, 0}, {10, 5, 0}));  // short, anchored both ends
+    network.lines.push_back(straight({0, 0, 0}, {10, 0, 0}));   // short, free: dropped
+    network.lines.push_back(straight({0, 5, 0}, {10, 5, 0}));   // short, anchored both ends
     network.lines.push_back(straight({0, 10, 0}, {30, 10, 0})); // long enough
     const std::vector<char> anchored{0, 0, 1, 1, 0, 0};
     EXPECT_EQ(dropOpenPieces(network, anchored, 15.0), 1);
