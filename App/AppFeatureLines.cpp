@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -32,6 +33,7 @@
 #include "FeatureLines/CloudIO.h"
 #include "FeatureLines/Curvature.h"
 #include "FeatureLines/HistogramThreshold.h"
+#include "InteractiveThresholds.h"
 #include "PropertyPointIndices.h"
 
 namespace FeatureLines {
@@ -240,6 +242,45 @@ Py::List floatList(const std::vector<double>& values)
     return list;
 }
 
+/// An extraction's cloud analysed with its parameters, through the cache (a recomputed object's
+/// analysis is a hit), for the functions of the interactive thresholding.
+struct AnalysedExtraction
+{
+    CloudAnalysis analysis;
+    featurelines::ExtractionOptions options;
+};
+
+AnalysedExtraction analysedExtraction(PyObject* object, const char* function)
+{
+    Extraction* e = extractionOf(object);
+    if (!e) {
+        throw Py::TypeError(std::string(function) + " needs a FeatureLines::Extraction object");
+    }
+    ExtractionInput input = extractionInput(*e);
+    ExtractionProgress progress("Feature lines of " + std::string(e->Label.getValue()));
+    input.options.progress = progress.callback();
+    AnalysedExtraction out;
+    out.analysis = analyseCached(input.points, input.cloudHash, input.options);
+    out.options = input.options;
+    out.options.progress = nullptr;
+    return out;
+}
+
+/// A region's values per input point of the extraction's source, -1 outside the region.
+Py::List perSourcePoint(const AnalysedExtraction& a, const featurelines::RegionGeometry& region,
+                        const std::vector<int>& perRegionPoint)
+{
+    std::vector<int> out(a.analysis.geometry->inputToPoint.size(), -1);
+    scatterToInputPoints(*a.analysis.geometry, region, perRegionPoint, out);
+    return intList(out);
+}
+
+double optionalNumber(PyObject* value)
+{
+    return value == Py_None ? std::numeric_limits<double>::quiet_NaN()
+                            : double(Py::Float(Py::Object(value)));
+}
+
 } // namespace
 
 class Module : public Py::ExtensionModule<Module>
@@ -295,6 +336,31 @@ public:
             "be handed to surface fitting. Patches of fewer than min_points points are left out\n"
             "(0: twice NeighbourCount, the fewest a surface fit can lean on); no group is made\n"
             "when no patch is left.");
+        add_keyword_method(
+            "regionHistogram", &Module::regionHistogramOf,
+            "regionHistogram(extraction, region=0) -> dict\n"
+            "The curvature histogram of one smooth region as the threshold search starts from it\n"
+            "(Sec. 2.2, HistogramBins bins; past the outlier cut of Sec. 2.4 the bins go on a\n"
+            "tenth of the range): {'counts', 'minimum', 'bin_width', 'outlier_cut' (NaN: none)}.\n"
+            "The cloud is analysed with the object's parameters (through the cache).");
+        add_keyword_method(
+            "searchThreshold", &Module::searchThresholdOf,
+            "searchThreshold(extraction, region=0, lower=None, upper=None) -> float\n"
+            "Sec. 2.3: the curvature threshold of the region's values in (lower, upper]: with no\n"
+            "bound the first threshold, with upper the next lower one, with lower the next higher\n"
+            "one, with both a threshold between two accepted ones. Raises ValueError when those\n"
+            "values have no valley.");
+        add_keyword_method(
+            "regionLabels", &Module::regionLabelsOf,
+            "regionLabels(extraction, region, threshold) -> list\n"
+            "Sec. 3 labels of the region's points at a candidate threshold, per point of the\n"
+            "source cloud: 0 low, 1 inner, 2 border, 3 noisy (Fig. 7 a), -1 outside the region.");
+        add_keyword_method(
+            "regionPatches", &Module::regionPatchesOf,
+            "regionPatches(extraction, region, thresholds) -> list\n"
+            "Per point of the source cloud its patch at the given thresholds: the connected points\n"
+            "of the region between the same two thresholds, numbered from 0; -1 outside the\n"
+            "region.");
         add_varargs_method(
             "parameters", &Module::listParameters,
             "parameters() -> list of dict\n"
@@ -573,6 +639,86 @@ private:
             created.append(Py::asObject(cloud->getPyObject()));
         }
         return created;
+    }
+
+    Py::Object regionHistogramOf(const Py::Tuple& args, const Py::Dict& keywords)
+    {
+        PyObject* object = nullptr;
+        int region = 0;
+        static const char* names[] = {"extraction", "region", nullptr};
+        if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "O|i",
+                                         const_cast<char**>(names), &object, &region)) {
+            throw Py::Exception();
+        }
+        const AnalysedExtraction a = analysedExtraction(object, "regionHistogram");
+        const RegionHistogram h =
+            regionHistogram(regionGeometry(a.analysis, region), a.options.smooth);
+        Py::Dict out;
+        out["counts"] = intList(h.counts);
+        out["minimum"] = Py::Float(h.minimum);
+        out["bin_width"] = Py::Float(h.binWidth);
+        out["outlier_cut"] = Py::Float(h.outlierCut);
+        return out;
+    }
+
+    Py::Object searchThresholdOf(const Py::Tuple& args, const Py::Dict& keywords)
+    {
+        PyObject* object = nullptr;
+        int region = 0;
+        PyObject* lower = Py_None;
+        PyObject* upper = Py_None;
+        static const char* names[] = {"extraction", "region", "lower", "upper", nullptr};
+        if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "O|iOO",
+                                         const_cast<char**>(names), &object, &region, &lower,
+                                         &upper)) {
+            throw Py::Exception();
+        }
+        const AnalysedExtraction a = analysedExtraction(object, "searchThreshold");
+        const featurelines::ThresholdResult t =
+            searchThreshold(regionGeometry(a.analysis, region), a.options.smooth,
+                            optionalNumber(lower), optionalNumber(upper));
+        return Py::Float(t.threshold);
+    }
+
+    Py::Object regionLabelsOf(const Py::Tuple& args, const Py::Dict& keywords)
+    {
+        PyObject* object = nullptr;
+        int region = 0;
+        double threshold = 0.0;
+        static const char* names[] = {"extraction", "region", "threshold", nullptr};
+        if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "Oid",
+                                         const_cast<char**>(names), &object, &region,
+                                         &threshold)) {
+            throw Py::Exception();
+        }
+        const AnalysedExtraction a = analysedExtraction(object, "regionLabels");
+        const featurelines::RegionGeometry& g = regionGeometry(a.analysis, region);
+        const std::vector<featurelines::PointLabel> labels =
+            regionLabels(g, threshold, a.options.smooth);
+        std::vector<int> values(labels.size());
+        for (size_t i = 0; i < labels.size(); ++i) {
+            values[i] = labels[i] == featurelines::PointLabel::Outside ? -1 : int(labels[i]);
+        }
+        return perSourcePoint(a, g, values);
+    }
+
+    Py::Object regionPatchesOf(const Py::Tuple& args, const Py::Dict& keywords)
+    {
+        PyObject* object = nullptr;
+        int region = 0;
+        PyObject* thresholds = nullptr;
+        static const char* names[] = {"extraction", "region", "thresholds", nullptr};
+        if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "OiO",
+                                         const_cast<char**>(names), &object, &region,
+                                         &thresholds)) {
+            throw Py::Exception();
+        }
+        const std::vector<double> levels = numbersOf(Py::Object(thresholds), "thresholds");
+        const AnalysedExtraction a = analysedExtraction(object, "regionPatches");
+        const featurelines::RegionGeometry& g = regionGeometry(a.analysis, region);
+        std::vector<int> patch;
+        regionPatches(g, levels, 0, patch);
+        return perSourcePoint(a, g, patch);
     }
 
     Py::Object listParameters(const Py::Tuple& args)

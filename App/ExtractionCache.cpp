@@ -5,6 +5,7 @@
 #include <chrono>
 #include <list>
 #include <memory>
+#include <mutex>
 #include <string_view>
 
 #include "ExtractionParameters.h"
@@ -52,6 +53,9 @@ private:
 
 struct Cache
 {
+    /// Guards everything below: a task panel analyses in a worker thread while the document
+    /// may recompute in the GUI thread. Held only to look up or store, never while the core runs.
+    std::mutex mutex;
     RecentlyUsed<CloudGeometry> geometry;
     RecentlyUsed<RegionAnalysis> analysis;
     CacheStatistics statistics;
@@ -89,19 +93,51 @@ std::shared_ptr<const CloudGeometry> findOrAnalyseCloud(const PointMatrix& P,
                                                         double& coreSeconds)
 {
     Cache& c = cache();
-    if (auto hit = c.geometry.find(key)) {
-        ++c.statistics.geometryHits;
-        return hit;
+    {
+        std::lock_guard<std::mutex> lock(c.mutex);
+        if (auto hit = c.geometry.find(key)) {
+            ++c.statistics.geometryHits;
+            return hit;
+        }
+        ++c.statistics.geometryMisses;
     }
-    ++c.statistics.geometryMisses;
     std::shared_ptr<const CloudGeometry> g;
     {
         CoreTimer timer(coreSeconds);
         g = std::make_shared<const CloudGeometry>(
             featurelines::analyseCloud(P, options.neighbours, options.progress));
     }
+    std::lock_guard<std::mutex> lock(c.mutex);
     c.geometry.insert(key, g, c.capacity);
     return g;
+}
+
+CloudAnalysis analyse(const PointMatrix& P, std::uint64_t cloudHash,
+                      const ExtractionOptions& options, double& coreSeconds)
+{
+    Cache& c = cache();
+    const std::string cloudKey = geometryKey(cloudHash, options);
+    CloudAnalysis a;
+    a.geometry = findOrAnalyseCloud(P, cloudKey, options, coreSeconds);
+
+    const std::string regionsKey = cloudKey + '|' + stageKey(options, ParameterStage::Regions);
+    {
+        std::lock_guard<std::mutex> lock(c.mutex);
+        a.regions = c.analysis.find(regionsKey);
+        if (a.regions) {
+            ++c.statistics.analysisHits;
+            return a;
+        }
+        ++c.statistics.analysisMisses;
+    }
+    {
+        CoreTimer timer(coreSeconds);
+        a.regions = std::make_shared<const RegionAnalysis>(
+            featurelines::analyseRegions(*a.geometry, options));
+    }
+    std::lock_guard<std::mutex> lock(c.mutex);
+    c.analysis.insert(regionsKey, a.regions, c.capacity);
+    return a;
 }
 
 } // namespace
@@ -116,31 +152,24 @@ std::uint64_t hashCloud(const PointMatrix& P)
 featurelines::ExtractionResult extractCached(const PointMatrix& P, std::uint64_t cloudHash,
                                              const ExtractionOptions& options)
 {
-    Cache& c = cache();
     double coreSeconds = 0.0;
-    const std::string cloudKey = geometryKey(cloudHash, options);
-    const auto geometry = findOrAnalyseCloud(P, cloudKey, options, coreSeconds);
-
-    const std::string regionsKey = cloudKey + '|' + stageKey(options, ParameterStage::Regions);
-    auto analysis = c.analysis.find(regionsKey);
-    if (analysis) {
-        ++c.statistics.analysisHits;
-    } else {
-        ++c.statistics.analysisMisses;
-        {
-            CoreTimer timer(coreSeconds);
-            analysis = std::make_shared<const RegionAnalysis>(
-                featurelines::analyseRegions(*geometry, options));
-        }
-        c.analysis.insert(regionsKey, analysis, c.capacity);
-    }
+    const CloudAnalysis a = analyse(P, cloudHash, options, coreSeconds);
     featurelines::ExtractionResult result;
     {
         CoreTimer timer(coreSeconds);
-        result = featurelines::extractFeatureLines(*geometry, *analysis, options);
+        result = featurelines::extractFeatureLines(*a.geometry, *a.regions, options);
     }
+    Cache& c = cache();
+    std::lock_guard<std::mutex> lock(c.mutex);
     c.statistics.lastCoreSeconds = coreSeconds;
     return result;
+}
+
+CloudAnalysis analyseCached(const PointMatrix& P, std::uint64_t cloudHash,
+                            const ExtractionOptions& options)
+{
+    double coreSeconds = 0.0;
+    return analyse(P, cloudHash, options, coreSeconds);
 }
 
 std::shared_ptr<const CloudGeometry> geometryCached(const PointMatrix& P, std::uint64_t cloudHash,
@@ -155,6 +184,7 @@ std::shared_ptr<const CloudGeometry> geometryCached(const PointMatrix& P, std::u
 CacheStatistics cacheStatistics()
 {
     Cache& c = cache();
+    std::lock_guard<std::mutex> lock(c.mutex);
     CacheStatistics s = c.statistics;
     s.geometryEntries = c.geometry.size();
     s.analysisEntries = c.analysis.size();
@@ -165,6 +195,7 @@ CacheStatistics cacheStatistics()
 void clearCache()
 {
     Cache& c = cache();
+    std::lock_guard<std::mutex> lock(c.mutex);
     c.geometry.clear();
     c.analysis.clear();
     c.statistics = CacheStatistics{};
@@ -173,6 +204,7 @@ void clearCache()
 void setCacheCapacity(int entries)
 {
     Cache& c = cache();
+    std::lock_guard<std::mutex> lock(c.mutex);
     c.capacity = std::max(0, entries);
     c.geometry.trim(c.capacity);
     c.analysis.trim(c.capacity);

@@ -26,6 +26,23 @@ featurelines::ExtractionResult extractCached(const featurelines::PointMatrix& P,
                                              std::uint64_t cloudHash,
                                              const featurelines::ExtractionOptions& options);
 
+/// The two cached steps of an extraction (Extraction.h): what extractCached runs before the last
+/// step, which thresholds the regions. Held by shared pointer, so a holder keeps an entry the
+/// cache has since dropped.
+struct CloudAnalysis
+{
+    std::shared_ptr<const featurelines::CloudGeometry> geometry;
+    std::shared_ptr<const featurelines::RegionAnalysis> regions;
+};
+
+/// analyseCloud and analyseRegions of P through the cache, as extractCached runs them: for a
+/// task panel that analyses in a worker thread (the cache is guarded by a mutex, held while an
+/// entry is looked up or stored, not while the core runs) and then previews thresholds of the
+/// regions before the document object recomputes with a warm cache. Throws what the core
+/// throws.
+CloudAnalysis analyseCached(const featurelines::PointMatrix& P, std::uint64_t cloudHash,
+                            const featurelines::ExtractionOptions& options);
+
 /// Neighbours, spacing and normals of P through the same cache (for curvature histograms of a
 /// whole cloud).
 std::shared_ptr<const featurelines::CloudGeometry>

@@ -98,6 +98,12 @@ public:
     App::PropertyFloatList PointCurvature;
 
     App::DocumentObjectExecReturn* execute() override;
+    /// Lines coloured by type, the task panel on double click (Gui/ViewProviderExtraction.h);
+    /// FreeCAD loads FeatureLinesGui for it when a document holding the object is opened.
+    const char* getViewProviderName() const override
+    {
+        return "FeatureLinesGui::ViewProviderExtraction";
+    }
 
     /// The parameter values the properties hold, for toExtractionOptions().
     ParameterValues parameterValues() const;
