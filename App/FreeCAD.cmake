@@ -75,6 +75,10 @@ if(NOT FEATURELINES_APP_ONLY)
     find_package(Coin CONFIG REQUIRED)
     add_library(FreeCAD_Gui INTERFACE)
     add_library(FreeCAD::Gui ALIAS FreeCAD_Gui)
+    # Gui/View3DInventor.h includes <QtOpenGL.h>, which FreeCAD's own configure step writes
+    # from this template (plain includes and typedefs, nothing to substitute).
+    configure_file("${FREECAD_SOURCE_DIR}/src/QtOpenGL.h.cmake"
+                   "${FREECAD_GENERATED_DIR}/QtOpenGL.h" COPYONLY)
     target_link_libraries(FreeCAD_Gui INTERFACE FreeCAD::App
         "${FREECAD_LIB_DIR}/libFreeCADGui.so" "${FREECAD_LIB_DIR}/PartGui.so"
         "${FREECAD_LIB_DIR}/PointsGui.so"
