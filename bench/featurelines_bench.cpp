@@ -20,7 +20,9 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "FeatureLines/CloudIO.h"
 #include "FeatureLines/Curvature.h"
+#include "FeatureLines/Extraction.h"
 #include "FeatureLines/HistogramThreshold.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
@@ -109,6 +111,9 @@ struct Row
     double outputMiB = 0.0;
     double startRssMiB = 0.0;
     double peakRssMiB = 0.0;
+    /// A share of the whole extraction (timed by its progress callback, not run on its own):
+    /// no memory columns.
+    bool part = false;
 
     double median() const { return medianOf(seconds); }
     double medianCpu() const { return medianOf(cpu); }
@@ -157,32 +162,119 @@ std::size_t bytesOf(const Neighbourhoods& N)
 
 struct Result
 {
+    std::string cloud; // what was measured, for the table's title
     long points = 0;
     double spacing = 0.0;
     std::vector<Row> rows;
+    std::string lines; // what the whole extraction found
 
     const Row& row(const std::string& stage) const
     {
         return *std::find_if(rows.begin(), rows.end(),
                              [&](const Row& r) { return r.stage == stage; });
     }
+    bool has(const std::string& stage) const
+    {
+        return std::any_of(rows.begin(), rows.end(),
+                           [&](const Row& r) { return r.stage == stage; });
+    }
 };
 
 const char* const knnStage = "nearestNeighbours k=16 (nanoflann)";
 const char* const normalsStage = "pcaNormals";
 const char* const curvatureStage = "meanCurvature";
+const char* const wholeStage = "extractFeatureLines (whole, default options)";
 const char* const pclNormalsStage = "PCL NormalEstimationOMP k=16";
 const char* const pclKnnStage = "PCL KdTreeFLANN kNN k=16";
 
-Result runOne(long requestedPoints, int runs, int threads)
+/// Times the steps of one extraction through its progress callback: each call ends the step
+/// named by the previous one. The region steps are summed over the regions.
+class StepClock
+{
+public:
+    StepClock() { mark("validation, duplicates merged"); }
+
+    bool operator()(double, const std::string& stage)
+    {
+        mark(stage);
+        return true;
+    }
+
+    /// Per step, in the order first met: wall and CPU seconds.
+    const std::vector<std::pair<std::string, std::pair<double, double>>>& steps() const
+    {
+        return steps_;
+    }
+
+private:
+    void mark(const std::string& stage)
+    {
+        const auto now = std::chrono::steady_clock::now();
+        const double cpu = cpuSeconds();
+        if (!current_.empty()) {
+            auto it = std::find_if(steps_.begin(), steps_.end(),
+                                   [&](const auto& s) { return s.first == current_; });
+            if (it == steps_.end()) {
+                steps_.push_back({current_, {0.0, 0.0}});
+                it = steps_.end() - 1;
+            }
+            it->second.first += std::chrono::duration<double>(now - start_).count();
+            it->second.second += cpu - cpuStart_;
+        }
+        // "curvature of smooth region 3" and "smooth edges of region 3": one step each.
+        std::string name = stage;
+        const auto digits = name.find_last_not_of("0123456789");
+        if (digits != std::string::npos && digits + 1 < name.size() && name[digits] == ' ') {
+            name = name.substr(0, digits) + "s";
+        }
+        current_ = name == "done" ? std::string() : name;
+        start_ = now;
+        cpuStart_ = cpu;
+    }
+
+    std::string current_;
+    std::chrono::steady_clock::time_point start_;
+    double cpuStart_ = 0.0;
+    std::vector<std::pair<std::string, std::pair<double, double>>> steps_;
+};
+
+/// The cloud measured: a seeded rounded cube of about `points` points, with normal noise of
+/// `noise` spacings, or the points of a file.
+struct Cloud
+{
+    std::string name;
+    PointMatrix points;
+    double spacing = 0.0; // 0: not known before the neighbours
+};
+
+Cloud roundedCubeCloud(long points, double noise)
+{
+    Cloud c;
+    c.spacing = spacingFor(points);
+    shapes::Sample cube = shapes::roundedCube(cubeEdge, cubeRadius, c.spacing, cubeSeed);
+    if (noise > 0.0) {
+        shapes::addNormalNoise(cube, noise * c.spacing, cubeSeed + 1);
+    }
+    c.points = std::move(cube.points);
+    std::ostringstream name;
+    name.imbue(std::locale::classic());
+    name << "rounded cube";
+    if (noise > 0.0) {
+        name << ", normal noise " << noise << " x spacing";
+    }
+    c.name = name.str();
+    return c;
+}
+
+Result runOne(const Cloud& cloud, int runs, int threads, bool stages)
 {
     Result result;
-    result.spacing = spacingFor(requestedPoints);
-    const shapes::Sample cube = shapes::roundedCube(cubeEdge, cubeRadius, result.spacing, cubeSeed);
-    const PointMatrix& P = cube.points;
+    result.cloud = cloud.name;
+    result.spacing = cloud.spacing;
+    const PointMatrix& P = cloud.points;
     result.points = static_cast<long>(P.rows());
     const auto n = static_cast<std::size_t>(P.rows());
-    std::cerr << "rounded cube: " << result.points << " points, spacing " << result.spacing << "\n";
+    std::cerr << cloud.name << ": " << result.points << " points\n";
 
     NeighbourOptions nopt;
     nopt.k = 16;
@@ -201,6 +293,9 @@ Result runOne(long requestedPoints, int runs, int threads)
         N = nearestNeighbours(P, nopt);
         return bytesOf(N);
     }));
+    if (result.spacing == 0.0) {
+        result.spacing = meanSpacing(N);
+    }
     result.rows.push_back(measure(normalsStage, runs, [&] {
         normals = NormalEstimate{};
         NormalOptions o;
@@ -215,33 +310,79 @@ Result runOne(long requestedPoints, int runs, int threads)
         H = meanCurvature(P, normals.normals, N, o);
         return n * sizeof(double);
     }));
-    result.rows.push_back(measure("ringNeighbourhoods", runs, [&] {
-        rings = RingNeighbourhoods{};
-        RingOptions o;
-        o.threads = threads;
-        rings = ringNeighbourhoods(P, normals.normals, N, o);
-        return (rings.offsets.size() + rings.indices.size()) * sizeof(int);
-    }));
-    result.rows.push_back(measure("laplacianSmooth (5 Taubin passes, all points)", runs, [&] {
-        smoothed = PointMatrix{};
-        smoothed = laplacianSmooth(P, N, all);
-        return n * 3 * sizeof(double);
-    }));
-    const std::vector<double> values(H.data(), H.data() + H.size());
-    result.rows.push_back(measure("findThreshold (L_start 50, all starts)", runs, [&] {
-        const ThresholdResult r = findThreshold(values);
-        return r.histogram.counts.size() * sizeof(long);
-    }));
-
-    // The yardstick, on the same points converted once to PCL's type.
+    if (stages) {
+        result.rows.push_back(measure("ringNeighbourhoods", runs, [&] {
+            rings = RingNeighbourhoods{};
+            RingOptions o;
+            o.threads = threads;
+            rings = ringNeighbourhoods(P, normals.normals, N, o);
+            return (rings.offsets.size() + rings.indices.size()) * sizeof(int);
+        }));
+        result.rows.push_back(measure("laplacianSmooth (5 Taubin passes, all points)", runs, [&] {
+            smoothed = PointMatrix{};
+            smoothed = laplacianSmooth(P, N, all);
+            return n * 3 * sizeof(double);
+        }));
+        const std::vector<double> values(H.data(), H.data() + H.size());
+        result.rows.push_back(measure("findThreshold (L_start 50, all starts)", runs, [&] {
+            const ThresholdResult r = findThreshold(values);
+            return r.histogram.counts.size() * sizeof(long);
+        }));
+    }
     N = Neighbourhoods{};
+    normals = NormalEstimate{};
+    H = Eigen::VectorXd{};
     rings = RingNeighbourhoods{};
     smoothed = PointMatrix{};
+
+    // The whole method with its default options, as `featurelines extract` runs it; its steps
+    // are timed through the progress callback (medians over the runs).
+    std::vector<StepClock> clocks;
+    ExtractionResult extraction;
+    result.rows.push_back(measure(wholeStage, runs, [&] {
+        extraction = ExtractionResult{};
+        ExtractionOptions o;
+        o.neighbours.threads = threads;
+        clocks.emplace_back();
+        StepClock& clock = clocks.back();
+        o.progress = [&clock](double done, const std::string& stage) { return clock(done, stage); };
+        extraction = extractFeatureLines(P, o);
+        std::size_t bytes = extraction.region.size() * (2 * sizeof(int) + 1 + sizeof(double));
+        for (const FeatureLine& l : extraction.lines) {
+            bytes += static_cast<std::size_t>(l.points.size()) * sizeof(double);
+        }
+        return bytes;
+    }));
+    for (const auto& [name, seconds] : clocks.front().steps()) {
+        Row part;
+        part.stage = "- " + name;
+        part.part = true;
+        for (const StepClock& clock : clocks) {
+            for (const auto& [other, s] : clock.steps()) {
+                if (other == name) {
+                    part.seconds.push_back(s.first);
+                    part.cpu.push_back(s.second);
+                }
+            }
+        }
+        result.rows.push_back(part);
+    }
+    result.lines = std::to_string(extraction.lines.size()) + " lines (sharp " +
+                   std::to_string(extraction.countLines(LineType::Sharp)) + ", smooth " +
+                   std::to_string(extraction.countLines(LineType::Smooth)) + ", boundary " +
+                   std::to_string(extraction.countLines(LineType::Boundary)) + "), " +
+                   std::to_string(extraction.junctions.rows()) + " junctions, " +
+                   std::to_string(extraction.regions.size()) + " smooth regions";
+    extraction = ExtractionResult{};
+
+    // The yardstick, on the same points converted once to PCL's type.
     const PclCloud pcl(P);
     result.rows.push_back(
         measure(pclNormalsStage, runs, [&] { return pcl.normalEstimationOmp(16, threads); }));
-    result.rows.push_back(
-        measure(pclKnnStage, runs, [&] { return pcl.kdTreeFlannKnn(16, threads); }));
+    if (stages) {
+        result.rows.push_back(
+            measure(pclKnnStage, runs, [&] { return pcl.kdTreeFlannKnn(16, threads); }));
+    }
     return result;
 }
 
@@ -296,13 +437,14 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
     std::vector<std::vector<std::string>> cells;
     for (const Row& row : r.rows) {
         const auto [lo, hi] = std::minmax_element(row.seconds.begin(), row.seconds.end());
-        cells.push_back({row.stage, fixed(row.median(), 3), fixed(*lo, 3) + ".." + fixed(*hi, 3),
-                         fixed(row.medianCpu(), 3), fixed(r.points / row.median() / 1e6, 2),
-                         fixed(row.outputMiB, 1), fixed(row.peakRssMiB, 0),
-                         fixed(std::max(0.0, row.peakRssMiB - row.startRssMiB), 0)});
+        cells.push_back(
+            {row.stage, fixed(row.median(), 3), fixed(*lo, 3) + ".." + fixed(*hi, 3),
+             fixed(row.medianCpu(), 3), fixed(r.points / row.median() / 1e6, 2),
+             row.part ? "" : fixed(row.outputMiB, 1), row.part ? "" : fixed(row.peakRssMiB, 0),
+             row.part ? "" : fixed(std::max(0.0, row.peakRssMiB - row.startRssMiB), 0)});
     }
     out << "\n"
-        << (markdown ? "### " : "") << r.points << " points (rounded cube, spacing "
+        << (markdown ? "### " : "") << r.points << " points (" << r.cloud << ", spacing "
         << fixed(r.spacing, 4) << ")\n\n";
     std::vector<std::size_t> width(header.size());
     for (std::size_t c = 0; c < header.size(); ++c) {
@@ -343,19 +485,39 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
     };
     const std::vector<const char*> perPoint{knnStage, normalsStage, curvatureStage};
     out << "\n";
+    if (!r.lines.empty()) {
+        out << "whole extraction found " << r.lines << (markdown ? "  \n" : "\n");
+    }
+    ratio("whole extraction / PCL NormalEstimationOMP, wall: ", {wholeStage}, pclNormalsStage,
+          &Row::median);
+    ratio("whole extraction / PCL NormalEstimationOMP, CPU: ", {wholeStage}, pclNormalsStage,
+          &Row::medianCpu);
+    const Row& whole = r.row(wholeStage);
+    const double millions = static_cast<double>(r.points) / 1e6;
+    out << "whole extraction, memory per million points: peak RSS "
+        << fixed(whole.peakRssMiB / millions, 0) << " MiB, peak - start "
+        << fixed((whole.peakRssMiB - whole.startRssMiB) / millions, 0) << " MiB"
+        << (markdown ? "  \n" : "\n");
     ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, wall: ", perPoint,
           pclNormalsStage, &Row::median);
     ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, CPU: ", perPoint,
           pclNormalsStage, &Row::medianCpu);
-    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage, &Row::median);
-    ratio("kNN alone, nanoflann / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
-          &Row::medianCpu);
+    if (r.has(pclKnnStage)) {
+        ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage,
+              &Row::median);
+        ratio("kNN alone, nanoflann / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
+              &Row::medianCpu);
+    }
 }
 
 const std::vector<OptionSpec>& optionSpecs()
 {
     static const std::vector<OptionSpec> specs{
-        {"--points", "N", "one cloud of about N points (default: 100000, then 1000000)"},
+        {"--points", "N", "one rounded cube of about N points (default: 100000, then 1000000)"},
+        {"--noise", "S", "normal noise on the rounded cube, x spacing (default 0)"},
+        {"--cloud", "FILE", "the points of FILE instead of a rounded cube (.xyz, .ply, .pcd)"},
+        {"--write-cloud", "FILE", "write the rounded cube as .xyz and stop"},
+        {"--whole", "", "the whole extraction and the yardstick only, not every stage"},
         {"--runs", "R", "runs per stage, the median is shown (default 3)"},
         {"--threads", "T", "worker threads, 0 for OpenMP's default (default 0)"},
         {"--markdown", "", "print the tables as Markdown"},
@@ -368,10 +530,10 @@ int run(const std::vector<std::string>& words)
 {
     const Arguments a(words, optionSpecs());
     if (a.has("--help")) {
-        std::cout << "usage: featurelines_bench [--points N] [--runs R] [--threads T] "
-                     "[--markdown]\n\noptions:\n";
+        std::cout << "usage: featurelines_bench [--points N [--noise S] | --cloud FILE] [--runs R] "
+                     "[--threads T] [--whole] [--markdown]\n\noptions:\n";
         for (const OptionSpec& o : optionSpecs()) {
-            std::cout << "  " << std::left << std::setw(14)
+            std::cout << "  " << std::left << std::setw(20)
                       << (o.name + (o.valueName.empty() ? "" : " " + o.valueName)) << o.help
                       << "\n";
         }
@@ -384,14 +546,32 @@ int run(const std::vector<std::string>& words)
     if (a.has("--points")) {
         sizes = {a.integer("--points", 0, 100, 1000000000)};
     }
+    const double noise = a.number("--noise", 0.0, 0.0, 10.0, true);
     const int runs = static_cast<int>(a.integer("--runs", 3, 1, 1000));
     const int threads = static_cast<int>(a.integer("--threads", 0, 0, 4096));
     const bool markdown = a.has("--markdown");
+    const bool stages = !a.has("--whole");
+    if (threads > 0) {
+        // The stages without a threads option (smoothing, the region steps of the whole
+        // extraction) follow OpenMP's default.
+        omp_set_num_threads(threads);
+    }
+    if (a.has("--write-cloud")) {
+        writeXyz(a.text("--write-cloud"), roundedCubeCloud(sizes.back(), noise).points);
+        return 0;
+    }
 
     const std::string loadBefore = loadAverage();
     std::vector<Result> results;
-    for (long points : sizes) {
-        results.push_back(runOne(points, runs, threads));
+    if (a.has("--cloud")) {
+        Cloud cloud;
+        cloud.name = a.text("--cloud");
+        cloud.points = readCloud(cloud.name);
+        results.push_back(runOne(cloud, runs, threads, stages));
+    } else {
+        for (long points : sizes) {
+            results.push_back(runOne(roundedCubeCloud(points, noise), runs, threads, stages));
+        }
     }
     printMachine(std::cout, threads, runs);
     std::cout << "load average (1, 5, 15 min) before: " << loadBefore
