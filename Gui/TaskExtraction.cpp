@@ -1,0 +1,906 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <FCConfig.h>
+
+#include "TaskExtraction.h"
+
+#include <BRep_Tool.hxx>
+#include <TopAbs_ShapeEnum.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+
+#include <App/Document.h>
+#include <Base/Console.h>
+#include <Base/Exception.h>
+#include <Gui/Application.h>
+#include <Gui/BitmapFactory.h>
+#include <Gui/Command.h>
+#include <Gui/Control.h>
+#include <Gui/Document.h>
+#include <Gui/TaskView/TaskView.h>
+#include <Mod/Points/App/PointsFeature.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "AnalysisRun.h"
+#include "ExtractionFeature.h"
+#include "ExtractionParameters.h"
+// FCConfig.h sets QT_NO_KEYWORDS; HistogramWidget.h is plain Qt and may say `signals`.
+#ifndef signals
+#define signals Q_SIGNALS
+#define FEATURELINES_DEFINED_SIGNALS
+#endif
+#include "HistogramWidget.h"
+#ifdef FEATURELINES_DEFINED_SIGNALS
+#undef signals
+#undef FEATURELINES_DEFINED_SIGNALS
+#endif
+#include "PointPreview.h"
+#include "ViewProviderExtraction.h"
+#include "ui_TaskExtractionOptions.h"
+#include "ui_TaskExtractionThresholds.h"
+
+using namespace FeatureLinesGui;
+using FeatureLines::Parameter;
+using FeatureLines::ParameterKind;
+
+namespace {
+
+constexpr double none = std::numeric_limits<double>::quiet_NaN();
+
+/// The options shown in the panel: the ones that decide the regions and their histograms. The
+/// others are in the property editor (their defaults scale with the cloud).
+const char* const panelOptions[] = {"NeighbourCount", "GrowAngle",      "MinFilletRadius",
+                                    "Smoothing",      "HistogramBins",  "OutlierPercent"};
+
+/// A number as Python writes it back exactly.
+std::string pythonNumber(double v)
+{
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+QString shortNumber(double v)
+{
+    return std::isfinite(v) ? QString::number(v, 'g', 4) : QString::fromUtf8("\u2014");
+}
+
+std::string pythonValue(const Parameter& p, double v)
+{
+    switch (p.kind) {
+    case ParameterKind::Integer:
+        return std::to_string(std::lround(v));
+    case ParameterKind::Switch:
+        return v != 0.0 ? "True" : "False";
+    case ParameterKind::Choice:
+        return std::string("'") + p.choices[std::lround(v)] + "'";
+    case ParameterKind::Float:
+    case ParameterKind::Spacing:
+    case ParameterKind::Angle:
+        break;
+    }
+    return pythonNumber(v);
+}
+
+QString colourName(const Base::Vector3f& c)
+{
+    return QColor::fromRgbF(c.x, c.y, c.z).name();
+}
+
+/// Smooth wires of one region and how many of them are closed.
+std::pair<int, int> regionLines(const FeatureLines::Extraction& e, int region)
+{
+    const std::vector<long>& regions = e.SmoothLineRegions.getValues();
+    const TopoDS_Shape& shape = e.SmoothWires.getShape().getShape();
+    int lines = 0;
+    int closed = 0;
+    if (shape.IsNull()) {
+        return {0, 0};
+    }
+    size_t i = 0;
+    for (TopoDS_Iterator it(shape); it.More(); it.Next(), ++i) {
+        if (i < regions.size() && regions[i] == region &&
+            it.Value().ShapeType() == TopAbs_WIRE) {
+            ++lines;
+            closed += BRep_Tool::IsClosed(TopoDS::Wire(it.Value())) ? 1 : 0;
+        }
+    }
+    return {lines, closed};
+}
+
+} // namespace
+
+TaskExtraction::TaskExtraction(ViewProviderExtraction* view)
+    : object(view->getObject()), documentName(view->getObject()->getDocument()->getName()),
+      optionsUi(std::make_unique<Ui_TaskExtractionOptions>()),
+      thresholdsUi(std::make_unique<Ui_TaskExtractionThresholds>())
+{
+    const QPixmap icon = Gui::BitmapFactory().pixmap("FeatureLines_Extract");
+    optionsWidget = new QWidget();
+    optionsUi->setupUi(optionsWidget);
+    auto* optionsBox = new Gui::TaskView::TaskBox(icon, optionsWidget->windowTitle(), true, nullptr);
+    optionsBox->groupLayout()->addWidget(optionsWidget);
+    Content.push_back(optionsBox);
+
+    thresholdsWidget = new QWidget();
+    thresholdsUi->setupUi(thresholdsWidget);
+    auto* thresholdsBox =
+        new Gui::TaskView::TaskBox(QPixmap(), thresholdsWidget->windowTitle(), true, nullptr);
+    thresholdsBox->groupLayout()->addWidget(thresholdsWidget);
+    Content.push_back(thresholdsBox);
+
+    run = new AnalysisRun(this);
+    FeatureLines::Extraction* e = extraction();
+    Gui::Document* guiDocument = Gui::Application::Instance->getDocument(e->getDocument());
+    preview = std::make_unique<PointPreview>(guiDocument, e->Source.getValue());
+
+    // A panel opened by setEdit from a script has no transaction of its own: every change it
+    // makes belongs to one, so that Cancel can abort it and one undo reverts it.
+    if (!Gui::Command::hasPendingCommand()) {
+        Gui::Command::openCommand(QT_TRANSLATE_NOOP("Command", "Edit feature lines"));
+    }
+
+    buildOptions();
+    connectWidgets();
+    setRunning(false);
+    optionsUi->progressBar->setVisible(false);
+    thresholdsWidget->setEnabled(false);
+    refresh();
+}
+
+TaskExtraction::~TaskExtraction()
+{
+    run->cancelAndWait();
+    // The widgets outlive this object's members (TaskDialog deletes them): no signal of theirs
+    // may reach a slot of it any more.
+    for (QWidget* w : {optionsWidget, thresholdsWidget}) {
+        for (QObject* child : w->findChildren<QObject*>()) {
+            disconnect(child, nullptr, this, nullptr);
+        }
+    }
+    closePreview();
+}
+
+App::DocumentObject* TaskExtraction::getObject() const
+{
+    return object.getObject();
+}
+
+FeatureLines::Extraction* TaskExtraction::extraction() const
+{
+    return dynamic_cast<FeatureLines::Extraction*>(object.getObject());
+}
+
+void TaskExtraction::buildOptions()
+{
+    FeatureLines::Extraction* e = extraction();
+    const FeatureLines::ParameterValues values = e->parameterValues();
+    const App::DocumentObject* source = e->Source.getValue();
+    if (const auto* cloud = dynamic_cast<const Points::Feature*>(source)) {
+        optionsUi->labelSource->setText(
+            tr("Cloud: %1 (%2 points)")
+                .arg(QString::fromUtf8(cloud->Label.getValue()))
+                .arg(cloud->Points.getValue().size()));
+    } else {
+        optionsUi->labelSource->setText(tr("No point cloud: set the Source property."));
+    }
+    for (const char* name : panelOptions) {
+        const Parameter* p = FeatureLines::findParameter(name);
+        if (!p) {
+            continue;
+        }
+        const double value = values.scalars.at(name);
+        QWidget* widget = nullptr;
+        switch (p->kind) {
+        case ParameterKind::Integer: {
+            auto* box = new QSpinBox();
+            box->setRange(int(p->minimum), int(std::min(p->maximum, 1e9)));
+            box->setSingleStep(std::max(1, int(p->step)));
+            box->setValue(int(std::lround(value)));
+            widget = box;
+            break;
+        }
+        case ParameterKind::Float:
+        case ParameterKind::Spacing:
+        case ParameterKind::Angle: {
+            auto* box = new QDoubleSpinBox();
+            box->setDecimals(p->kind == ParameterKind::Angle ? 1 : 2);
+            box->setRange(p->minimum, p->maximum);
+            box->setSingleStep(p->step > 0.0 ? p->step : 0.1);
+            box->setValue(value);
+            if (p->kind == ParameterKind::Spacing) {
+                box->setSuffix(tr(" \u00d7 spacing"));
+            } else if (p->kind == ParameterKind::Angle) {
+                box->setSuffix(QString::fromUtf8(" \u00b0"));
+            }
+            widget = box;
+            break;
+        }
+        case ParameterKind::Switch: {
+            auto* box = new QCheckBox();
+            box->setChecked(value != 0.0);
+            widget = box;
+            break;
+        }
+        case ParameterKind::Choice: {
+            auto* box = new QComboBox();
+            for (int i = 0; p->choices[i]; ++i) {
+                box->addItem(QString::fromLatin1(p->choices[i]));
+            }
+            box->setCurrentIndex(int(std::lround(value)));
+            widget = box;
+            break;
+        }
+        }
+        widget->setObjectName(QString::fromLatin1(name));
+        widget->setToolTip(QString::fromUtf8(p->doc));
+        auto* label = new QLabel(QString::fromLatin1(name) + QLatin1String(":"));
+        label->setToolTip(widget->toolTip());
+        optionsUi->optionsForm->addRow(label, widget);
+        optionWidgets[name] = widget;
+    }
+}
+
+FeatureLines::ParameterValues TaskExtraction::changedOptions() const
+{
+    FeatureLines::ParameterValues changes;
+    const FeatureLines::ParameterValues values = extraction()->parameterValues();
+    for (const auto& [name, widget] : optionWidgets) {
+        double v = 0.0;
+        if (auto* spin = qobject_cast<QSpinBox*>(widget)) {
+            v = spin->value();
+        } else if (auto* dspin = qobject_cast<QDoubleSpinBox*>(widget)) {
+            v = dspin->value();
+        } else if (auto* check = qobject_cast<QCheckBox*>(widget)) {
+            v = check->isChecked() ? 1.0 : 0.0;
+        } else if (auto* combo = qobject_cast<QComboBox*>(widget)) {
+            v = combo->currentIndex();
+        }
+        const double old = values.scalars.at(name);
+        // Spin boxes round to their decimals: a value they only show rounded is no change.
+        const auto* dspin = qobject_cast<QDoubleSpinBox*>(widget);
+        const double tolerance = dspin ? 0.5 * std::pow(10.0, -dspin->decimals()) : 0.0;
+        if (std::abs(v - old) > tolerance) {
+            changes.scalars[name] = v;
+        }
+    }
+    return changes;
+}
+
+void TaskExtraction::connectWidgets()
+{
+    Ui_TaskExtractionOptions& o = *optionsUi;
+    Ui_TaskExtractionThresholds& t = *thresholdsUi;
+    connect(o.buttonRun, &QPushButton::clicked, this, [this] { startRun(); });
+    connect(o.buttonCancelRun, &QPushButton::clicked, this, [this] {
+        run->cancel();
+        optionsUi->labelStatus->setText(tr("Cancelling at the next stage..."));
+    });
+    connect(run, &AnalysisRun::progressed, this, [this](int percent, const QString& stage) {
+        optionsUi->progressBar->setValue(percent);
+        optionsUi->progressBar->setFormat(stage + QLatin1String(" %p%"));
+    });
+    connect(run, &AnalysisRun::finished, this, [this] { runFinished(); });
+
+    connect(t.buttonAccept, &QPushButton::clicked, this, [this] { acceptCandidate(); });
+    connect(t.buttonLower, &QPushButton::clicked, this, [this] { lowerCandidate(); });
+    connect(t.buttonHigher, &QPushButton::clicked, this, [this] { higherCandidate(); });
+    connect(t.buttonBack, &QPushButton::clicked, this, [this] { backToLines(); });
+    connect(t.buttonDone, &QPushButton::clicked, this, [this] { done(); });
+    connect(t.buttonAddLower, &QPushButton::clicked, this, [this] { addThreshold(false); });
+    connect(t.buttonAddHigher, &QPushButton::clicked, this, [this] { addThreshold(true); });
+    connect(t.histogram, &HistogramWidget::valueClicked, this,
+            [this](double value) { chooseValue(value); });
+    connect(t.comboRegion, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int i) {
+        if (i >= 0 && i < static_cast<int>(regions.size()) && i != current) {
+            current = i;
+            thresholdsUi->labelMessage->clear();
+            refresh();
+        }
+    });
+    connect(t.comboPreview, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this](int) { refresh(); });
+}
+
+void TaskExtraction::open()
+{
+    startRun();
+}
+
+// ---- The analysis ---------------------------------------------------------------------------
+
+void TaskExtraction::startRun()
+{
+    FeatureLines::Extraction* e = extraction();
+    if (!e || run->isRunning()) {
+        return;
+    }
+    FeatureLines::ExtractionInput in;
+    try {
+        in = FeatureLines::extractionInput(*e, changedOptions());
+    } catch (const std::invalid_argument& error) {
+        optionsUi->labelStatus->setText(QString::fromUtf8(error.what()));
+        return;
+    }
+    optionsUi->labelStatus->setText(tr("Analysing the cloud..."));
+    optionsUi->progressBar->setValue(0);
+    optionsUi->progressBar->setFormat(QLatin1String("%p%"));
+    setRunning(true);
+    run->start(std::move(in));
+}
+
+void TaskExtraction::setRunning(bool running)
+{
+    optionsUi->buttonRun->setEnabled(!running);
+    optionsUi->buttonCancelRun->setEnabled(running);
+    optionsUi->progressBar->setVisible(running);
+    for (const auto& entry : optionWidgets) {
+        entry.second->setEnabled(!running);
+    }
+    thresholdsWidget->setEnabled(!running && analysed);
+}
+
+void TaskExtraction::runFinished()
+{
+    const AnalysisRun::Outcome& outcome = run->outcome();
+    setRunning(false);
+    switch (outcome.status) {
+    case AnalysisRun::Outcome::Cancelled:
+        optionsUi->labelStatus->setText(
+            tr("Run cancelled: the document is as it was%1.")
+                .arg(analysed ? tr(", the thresholds below use the previous analysis") : QString()));
+        return;
+    case AnalysisRun::Outcome::Failed:
+        optionsUi->labelStatus->setText(tr("The analysis failed: %1").arg(outcome.message));
+        return;
+    case AnalysisRun::Outcome::Done:
+        break;
+    }
+    FeatureLines::Extraction* e = extraction();
+    if (!e) {
+        return;
+    }
+    // The options the run used become the object's, as macro lines.
+    const FeatureLines::ParameterValues changes = changedOptions();
+    bool changed = false;
+    for (const auto& [name, value] : changes.scalars) {
+        const Parameter* p = FeatureLines::findParameter(name);
+        changed = runLine(objectCommand() + "." + name + " = " + pythonValue(*p, value)) ||
+                  changed;
+    }
+    analysis = outcome.analysis;
+    input = outcome.input;
+    input.options.progress = nullptr;
+    adoptAnalysis();
+    const size_t count = analysis.regions ? analysis.regions->geometry.size() : 0;
+    optionsUi->labelStatus->setText(
+        tr("%1 points, spacing %2, %3 smooth region(s).")
+            .arg(analysis.geometry->inputToPoint.size())
+            .arg(shortNumber(analysis.geometry->spacing))
+            .arg(count));
+    const bool anyAccepted = std::any_of(regions.begin(), regions.end(),
+                                         [](const Region& r) { return !r.accepted.empty(); });
+    if (anyAccepted && (changed || e->mustExecute())) {
+        recompute();
+    }
+    refresh();
+}
+
+void TaskExtraction::adoptAnalysis()
+{
+    analysed = true;
+    thresholdsWidget->setEnabled(true);
+    worldPoints.clear();
+    const featurelines::PointMatrix& P = input.points;
+    worldPoints.reserve(static_cast<size_t>(P.rows()));
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const Base::Vector3d w = input.toWorld * Base::Vector3d(P(i, 0), P(i, 1), P(i, 2));
+        worldPoints.emplace_back(float(w.x), float(w.y), float(w.z));
+    }
+    const std::vector<featurelines::RegionGeometry>& geometry = analysis.regions->geometry;
+    if (regionsInitialised && geometry.size() == regions.size()) {
+        // Same regions (an option of the curvature changed): keep the accepted thresholds,
+        // search the candidates again on the new histograms.
+        for (Region& r : regions) {
+            r.points = static_cast<int>(geometry[static_cast<size_t>(r.id)].members.size());
+            if (r.choosing) {
+                search(r, r.lower, r.upper);
+            }
+        }
+    } else {
+        if (regionsInitialised) {
+            thresholdsUi->labelMessage->setText(
+                tr("The options give other smooth regions: choose their thresholds again."));
+        }
+        initialiseRegions();
+    }
+    QComboBox* combo = thresholdsUi->comboRegion;
+    QSignalBlocker block(combo);
+    combo->clear();
+    for (const Region& r : regions) {
+        combo->addItem(tr("Region %1 (%2 points)").arg(r.id).arg(r.points));
+    }
+    current = std::clamp(current, 0, std::max(0, static_cast<int>(regions.size()) - 1));
+    combo->setCurrentIndex(current);
+    const bool several = regions.size() > 1;
+    thresholdsUi->labelRegion->setVisible(several);
+    combo->setVisible(several);
+}
+
+void TaskExtraction::initialiseRegions()
+{
+    FeatureLines::Extraction* e = extraction();
+    regions.clear();
+    current = 0;
+    const std::vector<featurelines::RegionGeometry>& geometry = analysis.regions->geometry;
+    // What the object holds already: its explicit thresholds, or those a computed automatic
+    // run used. A new object holds none: every region starts at stage (a).
+    std::map<int, std::vector<double>> held;
+    if (e->ThresholdMode.getValueAsString() == std::string("Explicit")) {
+        const auto byRegion = FeatureLines::parseRegionThresholds(e->RegionThresholds.getValues());
+        for (const featurelines::RegionGeometry& g : geometry) {
+            auto it = byRegion.find(g.region);
+            held[g.region] = it != byRegion.end() ? it->second : e->Thresholds.getValues();
+        }
+    } else if (!e->mustExecute() && e->isValid()) {
+        const std::vector<double>& used = e->UsedThresholds.getValues();
+        const std::vector<long>& usedRegions = e->UsedThresholdRegions.getValues();
+        for (size_t i = 0; i < used.size() && i < usedRegions.size(); ++i) {
+            held[int(usedRegions[i])].push_back(used[i]);
+        }
+    }
+    for (const featurelines::RegionGeometry& g : geometry) {
+        Region r;
+        r.id = g.region;
+        r.points = static_cast<int>(g.members.size());
+        r.accepted = held[g.region];
+        r.lower = r.upper = none;
+        r.candidate = none;
+        r.choosing = r.accepted.empty();
+        if (r.choosing) {
+            search(r, none, none);
+        }
+        regions.push_back(r);
+    }
+    regionsInitialised = true;
+}
+
+// ---- Sec. 2.3: the two stages -------------------------------------------------------------
+
+bool TaskExtraction::search(Region& r, double lower, double upper)
+{
+    try {
+        const featurelines::RegionGeometry& g = FeatureLines::regionGeometry(analysis, r.id);
+        const featurelines::ThresholdResult t =
+            FeatureLines::searchThreshold(g, input.options.smooth, lower, upper);
+        r.candidate = t.threshold;
+        r.note.clear();
+        return true;
+    } catch (const std::invalid_argument& e) {
+        r.note = QString::fromUtf8(e.what());
+        return false;
+    }
+}
+
+void TaskExtraction::acceptCandidate()
+{
+    Region* r = currentRegion();
+    if (!r || !r->choosing || !std::isfinite(r->candidate)) {
+        return;
+    }
+    r->accepted.push_back(r->candidate);
+    r->choosing = false;
+    thresholdsUi->labelMessage->clear();
+    writeThresholds();
+    recompute();
+    refresh();
+}
+
+void TaskExtraction::lowerCandidate()
+{
+    Region* r = currentRegion();
+    if (!r || !r->choosing || !std::isfinite(r->candidate)) {
+        return;
+    }
+    Region trial = *r;
+    if (search(trial, r->lower, r->candidate)) {
+        *r = trial;
+        thresholdsUi->labelMessage->clear();
+    } else {
+        thresholdsUi->labelMessage->setText(
+            tr("No lower valley: %1. The candidate stays.").arg(trial.note));
+    }
+    refresh();
+}
+
+void TaskExtraction::higherCandidate()
+{
+    Region* r = currentRegion();
+    if (!r || !r->choosing || !std::isfinite(r->candidate)) {
+        return;
+    }
+    Region trial = *r;
+    if (search(trial, r->candidate, r->upper)) {
+        *r = trial;
+        thresholdsUi->labelMessage->clear();
+    } else {
+        thresholdsUi->labelMessage->setText(
+            tr("No higher valley: %1. The candidate stays.").arg(trial.note));
+    }
+    refresh();
+}
+
+void TaskExtraction::backToLines()
+{
+    Region* r = currentRegion();
+    if (r && !r->accepted.empty()) {
+        r->choosing = false;
+        thresholdsUi->labelMessage->clear();
+        refresh();
+    }
+}
+
+void TaskExtraction::addThreshold(bool higher)
+{
+    Region* r = currentRegion();
+    if (!r || r->accepted.empty()) {
+        return;
+    }
+    // Sec. 2.3: the histogram of the values below the lowest accepted threshold (Fig. 5), or
+    // above the highest.
+    const auto [lo, hi] = std::minmax_element(r->accepted.begin(), r->accepted.end());
+    Region trial = *r;
+    trial.lower = higher ? *hi : none;
+    trial.upper = higher ? none : *lo;
+    trial.choosing = true;
+    if (search(trial, trial.lower, trial.upper)) {
+        *r = trial;
+        thresholdsUi->labelMessage->clear();
+    } else {
+        thresholdsUi->labelMessage->setText(tr("No %1 valley: %2")
+                                                .arg(higher ? tr("higher") : tr("lower"))
+                                                .arg(trial.note));
+    }
+    refresh();
+}
+
+void TaskExtraction::chooseValue(double value)
+{
+    Region* r = currentRegion();
+    if (!r || !std::isfinite(value) ||
+        std::find(r->accepted.begin(), r->accepted.end(), value) != r->accepted.end()) {
+        return;
+    }
+    // The user's own threshold: bounded by the accepted ones around it, as a searched one is.
+    r->lower = none;
+    r->upper = none;
+    for (double a : r->accepted) {
+        if (a < value && !(a <= r->lower)) {
+            r->lower = a;
+        }
+        if (a > value && !(a >= r->upper)) {
+            r->upper = a;
+        }
+    }
+    r->candidate = value;
+    r->choosing = true;
+    r->note.clear();
+    thresholdsUi->labelMessage->setText(tr("Candidate chosen in the histogram."));
+    refresh();
+}
+
+void TaskExtraction::done()
+{
+    // Closing deletes this dialog and its buttons: not from inside the button's own signal.
+    QTimer::singleShot(0, &Gui::Control(), [] { Gui::Control().accept(); });
+}
+
+// ---- The document ---------------------------------------------------------------------------
+
+std::string TaskExtraction::objectCommand() const
+{
+    return "App.getDocument('" + documentName + "').getObject('" + object.getObjectName() + "')";
+}
+
+bool TaskExtraction::runLine(const std::string& command, bool gui)
+{
+    try {
+        Gui::Command::doCommand(gui ? Gui::Command::Gui : Gui::Command::Doc, "%s",
+                                command.c_str());
+        return true;
+    } catch (const Base::Exception& e) {
+        thresholdsUi->labelMessage->setText(QString::fromUtf8(e.what()));
+        Base::Console().Error("FeatureLines: %s\n", e.what());
+        return false;
+    }
+}
+
+void TaskExtraction::writeThresholds()
+{
+    auto list = [](std::vector<double> values) {
+        std::sort(values.begin(), values.end(), std::greater<double>());
+        return values;
+    };
+    const std::string obj = objectCommand();
+    runLine(obj + ".ThresholdMode = 'Explicit'");
+    if (regions.size() == 1) {
+        std::string text;
+        for (double t : list(regions.front().accepted)) {
+            text += (text.empty() ? "" : ", ") + pythonNumber(t);
+        }
+        runLine(obj + ".Thresholds = [" + text + "]");
+        runLine(obj + ".RegionThresholds = {}");
+        return;
+    }
+    // Several regions: each its own list; regions without one get none (Thresholds empty).
+    std::string map;
+    for (const Region& r : regions) {
+        if (r.accepted.empty()) {
+            continue;
+        }
+        std::string text;
+        for (double t : list(r.accepted)) {
+            text += (text.empty() ? "" : " ") + pythonNumber(t);
+        }
+        map += (map.empty() ? "'" : ", '") + std::to_string(r.id) + "': '" + text + "'";
+    }
+    runLine(obj + ".Thresholds = []");
+    runLine(obj + ".RegionThresholds = {" + map + "}");
+}
+
+bool TaskExtraction::recompute()
+{
+    if (!runLine("App.getDocument('" + documentName + "').recompute()")) {
+        return false;
+    }
+    FeatureLines::Extraction* e = extraction();
+    if (e && !e->isValid()) {
+        // The object keeps its last good lines; the message says why this recompute failed.
+        thresholdsUi->labelMessage->setText(
+            tr("Recompute failed: %1").arg(QString::fromUtf8(e->getStatusString())));
+        return false;
+    }
+    return true;
+}
+
+bool TaskExtraction::accept()
+{
+    closing = true;
+    run->cancelAndWait();
+    closePreview();
+    FeatureLines::Extraction* e = extraction();
+    if (e && e->mustExecute()) {
+        // OK before any threshold was accepted keeps the object in its mode (Automatic for a
+        // new one): it is computed as it stands.
+        runLine("App.getDocument('" + documentName + "').recompute()");
+    }
+    Gui::Command::commitCommand();
+    runLine("Gui.getDocument('" + documentName + "').resetEdit()", true);
+    return true;
+}
+
+bool TaskExtraction::reject()
+{
+    closing = true;
+    run->cancelAndWait();
+    closePreview();
+    runLine("Gui.getDocument('" + documentName + "').resetEdit()", true);
+    // Back to the document as it was before the panel opened: a new object goes again.
+    Gui::Command::abortCommand();
+    return true;
+}
+
+// ---- What the panel shows -------------------------------------------------------------------
+
+TaskExtraction::Region* TaskExtraction::currentRegion()
+{
+    if (current < 0 || current >= static_cast<int>(regions.size())) {
+        return nullptr;
+    }
+    return &regions[static_cast<size_t>(current)];
+}
+
+const featurelines::RegionGeometry* TaskExtraction::currentGeometry() const
+{
+    if (!analysed || current < 0 || current >= static_cast<int>(regions.size())) {
+        return nullptr;
+    }
+    try {
+        return &FeatureLines::regionGeometry(analysis, regions[static_cast<size_t>(current)].id);
+    } catch (const std::invalid_argument&) {
+        return nullptr;
+    }
+}
+
+double TaskExtraction::focusThreshold(const Region& r) const
+{
+    if (r.choosing) {
+        return r.candidate;
+    }
+    return r.accepted.empty() ? none : r.accepted.back();
+}
+
+void TaskExtraction::refresh()
+{
+    if (closing) {
+        return;
+    }
+    refreshHistogram();
+    refreshPreview();
+    refreshStage();
+}
+
+void TaskExtraction::refreshHistogram()
+{
+    HistogramWidget* h = thresholdsUi->histogram;
+    const featurelines::RegionGeometry* g = currentGeometry();
+    const Region* r = currentRegion();
+    if (!g || !r) {
+        h->clear();
+        if (analysed) {
+            h->setMessage(tr("No smooth region: the cloud has no curvature histogram."));
+        }
+        return;
+    }
+    const FeatureLines::RegionHistogram rh = FeatureLines::regionHistogram(*g, input.options.smooth);
+    h->setHistogram(std::vector<double>(rh.counts.begin(), rh.counts.end()), rh.minimum,
+                    rh.binWidth);
+    h->setOutlierCut(rh.outlierCut);
+    h->setThresholds(r->choosing ? r->candidate : none, r->accepted);
+}
+
+void TaskExtraction::refreshStage()
+{
+    Ui_TaskExtractionThresholds& t = *thresholdsUi;
+    const Region* r = currentRegion();
+    if (!analysed || !r) {
+        t.labelStage->setText(analysed ? tr("The cloud has no smooth region to threshold.")
+                                       : tr("The thresholds follow the analysis."));
+        t.stageStack->setEnabled(false);
+        return;
+    }
+    t.stageStack->setEnabled(true);
+    QStringList accepted;
+    for (double a : r->accepted) {
+        accepted << shortNumber(a);
+    }
+    if (r->choosing) {
+        t.stageStack->setCurrentWidget(t.pageCandidate);
+        const bool has = std::isfinite(r->candidate);
+        t.buttonAccept->setEnabled(has);
+        t.buttonLower->setEnabled(has);
+        t.buttonHigher->setEnabled(has);
+        t.buttonBack->setVisible(!r->accepted.empty());
+        if (!has) {
+            t.labelStage->setText(tr("<b>No candidate threshold</b>: %1. Click in the histogram "
+                                     "to choose one.")
+                                      .arg(r->note.toHtmlEscaped()));
+            return;
+        }
+        QString counts;
+        if (labelCounts.size() == 4) {
+            counts = tr("<br>Points: %1 low, %2 inner, %3 border, %4 noisy.")
+                         .arg(labelCounts[0])
+                         .arg(labelCounts[1])
+                         .arg(labelCounts[2])
+                         .arg(labelCounts[3]);
+        }
+        t.labelStage->setText(
+            tr("<b>Candidate \u03c4 = %1</b>%2. Does it divide the points right? Accept it, or "
+               "search a lower or higher valley.%3")
+                .arg(shortNumber(r->candidate))
+                .arg(accepted.isEmpty() ? QString()
+                                        : tr(" (accepted: %1)").arg(accepted.join(QLatin1String(", "))))
+                .arg(counts));
+        return;
+    }
+    t.stageStack->setCurrentWidget(t.pageLines);
+    int lines = 0;
+    int closed = 0;
+    if (const FeatureLines::Extraction* e = extraction()) {
+        std::tie(lines, closed) = regionLines(*e, r->id);
+    }
+    t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b>, at \u03c4 = %3. Are the lines "
+                             "complete? Done, or add a threshold.")
+                              .arg(lines)
+                              .arg(closed)
+                              .arg(accepted.join(QLatin1String(", "))));
+}
+
+void TaskExtraction::refreshPreview()
+{
+    Ui_TaskExtractionThresholds& t = *thresholdsUi;
+    labelCounts.clear();
+    const auto mode = static_cast<PreviewMode>(t.comboPreview->currentIndex());
+    const Region* r = currentRegion();
+    const featurelines::RegionGeometry* g = currentGeometry();
+    // The label counts are shown with the candidate whatever the preview shows.
+    std::vector<int> perInput(worldPoints.size(), -1);
+    if (r && g && std::isfinite(focusThreshold(*r))) {
+        const std::vector<featurelines::PointLabel> labels =
+            FeatureLines::regionLabels(*g, focusThreshold(*r), input.options.smooth);
+        std::vector<int> values(labels.size());
+        labelCounts.assign(4, 0);
+        for (size_t i = 0; i < labels.size(); ++i) {
+            values[i] = labels[i] == featurelines::PointLabel::Outside ? -1 : int(labels[i]);
+            if (values[i] >= 0 && values[i] < 4) {
+                ++labelCounts[static_cast<size_t>(values[i])];
+            }
+        }
+        if (perInput.size() == analysis.geometry->inputToPoint.size()) {
+            FeatureLines::scatterToInputPoints(*analysis.geometry, *g, values, perInput);
+        }
+    }
+    if (mode == PreviewMode::Off || !analysed || worldPoints.empty()) {
+        t.labelLegend->clear();
+        if (preview) {
+            preview->remove();
+        }
+        return;
+    }
+    std::vector<Base::Vector3f> colours(worldPoints.size());
+    if (mode == PreviewMode::Labels) {
+        for (size_t i = 0; i < colours.size(); ++i) {
+            colours[i] = PointPreview::labelColour(perInput[i]);
+        }
+        QString legend;
+        const char* names[] = {QT_TR_NOOP("low"), QT_TR_NOOP("inner"), QT_TR_NOOP("border"),
+                               QT_TR_NOOP("noisy")};
+        for (int l = 0; l < 4; ++l) {
+            legend += QString::fromLatin1("<span style=\"color:%1\">\u25a0</span> %2&nbsp;&nbsp; ")
+                          .arg(colourName(PointPreview::labelColour(l)), tr(names[l]));
+        }
+        legend += QString::fromLatin1("<span style=\"color:%1\">\u25a0</span> %2")
+                      .arg(colourName(PointPreview::labelColour(-1)), tr("other regions"));
+        t.labelLegend->setText(legend);
+    } else {
+        // Every region's patches at its accepted thresholds (and the candidate).
+        std::vector<int> patch(worldPoints.size(), -1);
+        int next = 0;
+        for (const Region& region : regions) {
+            std::vector<double> levels = region.accepted;
+            if (region.choosing && std::isfinite(region.candidate)) {
+                levels.push_back(region.candidate);
+            }
+            const featurelines::RegionGeometry& rg = FeatureLines::regionGeometry(analysis, region.id);
+            std::vector<int> patchOf;
+            next = FeatureLines::regionPatches(rg, levels, next, patchOf);
+            FeatureLines::scatterToInputPoints(*analysis.geometry, rg, patchOf, patch);
+        }
+        for (size_t i = 0; i < colours.size(); ++i) {
+            colours[i] = PointPreview::patchColour(patch[i]);
+        }
+        t.labelLegend->setText(tr("%1 patch(es): the connected points between the same two "
+                                  "thresholds.")
+                                   .arg(next));
+    }
+    if (preview) {
+        try {
+            preview->show(worldPoints, colours);
+        } catch (const std::exception& e) {
+            Base::Console().Error("FeatureLines preview: %s\n", e.what());
+        }
+    }
+}
+
+void TaskExtraction::closePreview()
+{
+    if (preview) {
+        preview->remove();
+        preview.reset();
+    }
+}
