@@ -2,6 +2,8 @@
 // Normals by principal component analysis of each point's k nearest neighbours.
 #pragma once
 
+#include <vector>
+
 #include "FeatureLines/Neighbours.h"
 
 namespace featurelines {
@@ -26,5 +28,11 @@ struct NormalEstimate
 /// PCA normals of P over the neighbourhoods N.
 NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
                           const NormalOptions& options = {});
+
+/// The same normals for the listed rows of P only, written into `normals` (#P by 3); the other
+/// rows are left as they are. For a sub-cloud whose neighbourhoods are those of its cloud
+/// except where its border cuts them: the other rows keep the cloud's normals.
+void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::vector<int>& rows,
+                      NormalMatrix& normals, const NormalOptions& options = {});
 
 } // namespace featurelines

@@ -15,13 +15,24 @@ namespace featurelines {
 
 namespace {
 
-/// A neighbour projected onto the tangent plane, mapped to w = 2 q / |q|^2. The origin (the
-/// point itself) takes part in the hull with index -1.
-struct Candidate
+/// The neighbours of one point projected onto its tangent plane and mapped to w = 2 q / |q|^2,
+/// in arrays (the sort and the hull move small indices, not the coordinates). Candidate 0 is
+/// the origin (the point itself), index -1.
+struct Candidates
 {
-    double x;
-    double y;
-    int index;
+    std::vector<double> x, y;
+    std::vector<int> index;
+    int count = 0;
+
+    explicit Candidates(int capacity) : x(capacity), y(capacity), index(capacity) {}
+    void clear() { count = 0; }
+    void add(double cx, double cy, int i)
+    {
+        x[count] = cx;
+        y[count] = cy;
+        index[count] = i;
+        ++count;
+    }
 };
 
 /// Projections closer to the point than this fraction of the neighbourhood's squared radius
@@ -47,44 +58,57 @@ double pseudoAngle(double x, double y)
     return x >= 0.0 ? p : (y >= 0.0 ? 2.0 - p : -2.0 - p);
 }
 
-/// True when o -> a -> b turns strictly left.
-bool turnsLeft(const Candidate& o, const Candidate& a, const Candidate& b)
+/// True when o -> a -> b turns strictly left (candidates o, a, b).
+bool turnsLeft(const Candidates& c, int o, int a, int b)
 {
-    const double ax = a.x - o.x, ay = a.y - o.y;
-    const double bx = b.x - o.x, by = b.y - o.y;
+    const double ax = c.x[a] - c.x[o], ay = c.y[a] - c.y[o];
+    const double bx = c.x[b] - c.x[o], by = c.y[b] - c.y[o];
     const double cross = ax * by - ay * bx;
-    return cross > straightTurn * std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+    // A right turn or none needs no square root (the bound is not negative).
+    return cross > 0.0 &&
+           cross > straightTurn * std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
 }
 
-/// Strict vertices of the convex hull of `points` (Andrew's monotone chain), appended to
-/// `hull` counter-clockwise. `points` is reordered.
-void convexHull(std::vector<Candidate>& points, std::vector<Candidate>& hull)
+/// Strict vertices of the convex hull of the candidates (Andrew's monotone chain), as
+/// candidate numbers in `hull`, counter-clockwise. `order` is scratch space.
+void convexHull(const Candidates& c, std::vector<int>& order, std::vector<int>& hull)
 {
-    hull.clear();
-    std::sort(points.begin(), points.end(), [](const Candidate& a, const Candidate& b) {
-        return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
-    const std::size_t n = points.size();
+    const int n = c.count;
+    // Sorted by x, then y; an insertion sort, fastest on so few, keeps exact ties in candidate
+    // order.
+    order.resize(static_cast<size_t>(n));
+    for (int a = 0; a < n; ++a) {
+        int b = a;
+        while (b > 0) {
+            const int prev = order[b - 1];
+            if (!(c.x[a] < c.x[prev] || (c.x[a] == c.x[prev] && c.y[a] < c.y[prev]))) {
+                break;
+            }
+            order[b] = prev;
+            --b;
+        }
+        order[b] = a;
+    }
     if (n < 3) {
-        hull = points;
+        hull = order;
         return;
     }
-    hull.resize(2 * n);
-    std::size_t size = 0;
-    for (std::size_t i = 0; i < n; ++i) { // lower chain
-        while (size >= 2 && !turnsLeft(hull[size - 2], hull[size - 1], points[i])) {
+    hull.resize(2 * static_cast<size_t>(n));
+    int size = 0;
+    for (int i = 0; i < n; ++i) { // lower chain
+        while (size >= 2 && !turnsLeft(c, hull[size - 2], hull[size - 1], order[i])) {
             --size;
         }
-        hull[size++] = points[i];
+        hull[size++] = order[i];
     }
-    const std::size_t lower = size + 1;
-    for (std::size_t i = n - 1; i-- > 0;) { // upper chain
-        while (size >= lower && !turnsLeft(hull[size - 2], hull[size - 1], points[i])) {
+    const int lower = size + 1;
+    for (int i = n - 1; i-- > 0;) { // upper chain
+        while (size >= lower && !turnsLeft(c, hull[size - 2], hull[size - 1], order[i])) {
             --size;
         }
-        hull[size++] = points[i];
+        hull[size++] = order[i];
     }
-    hull.resize(size - 1); // the last point repeats the first
+    hull.resize(static_cast<size_t>(size - 1)); // the last point repeats the first
 }
 
 } // namespace
@@ -100,16 +124,20 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
     }
     const Eigen::Index n = P.rows();
     const int k = N.k();
-    // Rings first go to fixed rows of k slots, then are packed into the compressed rows.
-    IndexMatrix slots(n, k);
+    // Each block of points first gathers its rings on its own, then the blocks are packed into
+    // the compressed rows.
+    constexpr Eigen::Index block = 4096;
+    const Eigen::Index blocks = (n + block - 1) / block;
+    std::vector<std::vector<int>> blockRings(static_cast<size_t>(blocks));
     std::vector<int> counts(n, 0);
 
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        std::vector<Candidate> candidates;
-        std::vector<Candidate> hull;
+        Candidates candidates(k + 1);
+        std::vector<int> order, hull;
 #pragma omp for schedule(static, 4096)
         for (Eigen::Index i = 0; i < n; ++i) {
+            std::vector<int>& rings = blockRings[static_cast<size_t>(i / block)];
             const Eigen::Vector3d normal = normals.row(i).transpose();
             if (!(normal.norm() > 0.0) || !normal.allFinite()) {
                 continue;
@@ -123,7 +151,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
             // half-plane {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff
             // 2 q / |q|^2 is a vertex of the convex hull of these points and the origin.
             candidates.clear();
-            candidates.push_back({0.0, 0.0, -1});
+            candidates.add(0.0, 0.0, -1);
             for (int j = 0; j < k; ++j) {
                 const int q = N.indices(i, j);
                 const Eigen::Vector3d d = (P.row(q) - P.row(i)).transpose();
@@ -133,9 +161,9 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
                 if (!(s > tooClose)) {
                     continue;
                 }
-                candidates.push_back({2.0 * x / s, 2.0 * y / s, q});
+                candidates.add(2.0 * x / s, 2.0 * y / s, q);
             }
-            convexHull(candidates, hull);
+            convexHull(candidates, order, hull);
 
             // The hull runs counter-clockwise, so its vertices are already in angular order
             // around the point, which lies inside or on it. A border point is a vertex of its
@@ -145,11 +173,12 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
             std::size_t start = 0;
             double smallest = std::numeric_limits<double>::infinity();
             for (std::size_t h = 0; h < size; ++h) {
-                if (hull[h].index < 0) {
+                const int c = hull[h];
+                if (candidates.index[c] < 0) {
                     start = h + 1;
                     break;
                 }
-                const double angle = pseudoAngle(hull[h].x, hull[h].y);
+                const double angle = pseudoAngle(candidates.x[c], candidates.y[c]);
                 if (angle < smallest) {
                     smallest = angle;
                     start = h;
@@ -157,9 +186,10 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
             }
             int count = 0;
             for (std::size_t h = 0; h < size; ++h) {
-                const Candidate& c = hull[(start + h) % size];
-                if (c.index >= 0) {
-                    slots(i, count++) = c.index;
+                const int q = candidates.index[hull[(start + h) % size]];
+                if (q >= 0) {
+                    rings.push_back(q);
+                    ++count;
                 }
             }
             counts[i] = count;
@@ -173,11 +203,11 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
         result.offsets[i + 1] = result.offsets[i] + counts[i];
     }
     result.indices.resize(result.offsets[n]);
-#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index i = 0; i < n; ++i) {
-        for (int r = 0; r < counts[i]; ++r) {
-            result.indices[result.offsets[i] + r] = slots(i, r);
-        }
+#pragma omp parallel for schedule(static, 1) num_threads(threadCount(options.threads))
+    for (Eigen::Index b = 0; b < blocks; ++b) {
+        std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
+        std::copy(rings.begin(), rings.end(), result.indices.begin() + result.offsets[b * block]);
+        std::vector<int>().swap(rings);
     }
     return result;
 }

@@ -804,6 +804,14 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
                              int regionId, double spacing, const SmoothEdgeOptions& options)
 {
+    return analyseRegion(P, N, NormalMatrix(), region, members, regionId, spacing, options);
+}
+
+RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
+                             const NormalMatrix& normals, const std::vector<int>& region,
+                             const std::vector<int>& members, int regionId, double spacing,
+                             const SmoothEdgeOptions& options)
+{
     if (options.curvatureAveragingPasses < 0) {
         throw std::invalid_argument("curvature averaging passes must not be negative");
     }
@@ -812,16 +820,43 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                                     std::to_string(members.size()) +
                                     " points, too few for its curvature");
     }
+    if (normals.rows() != 0 && normals.rows() != P.rows()) {
+        throw std::invalid_argument("analyseRegion: the cloud's normals and points differ in "
+                                    "number");
+    }
     RegionGeometry g;
     g.region = regionId;
     g.members = members;
     g.spacing = spacing;
     g.neighbours = regionNeighbourhoods(N, region, members, regionId);
-    g.points.resize(static_cast<Eigen::Index>(members.size()), 3);
-    for (size_t i = 0; i < members.size(); ++i) {
-        g.points.row(static_cast<Eigen::Index>(i)) = P.row(members[i]);
+    const Eigen::Index m = static_cast<Eigen::Index>(members.size());
+    g.points.resize(m, 3);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        g.points.row(i) = P.row(members[static_cast<size_t>(i)]);
     }
-    g.normals = pcaNormals(g.points, g.neighbours).normals;
+    if (normals.rows() == 0) {
+        g.normals = pcaNormals(g.points, g.neighbours).normals;
+    } else {
+        // A row of the region whose neighbours are all in the region is the cloud's row, its
+        // fit the cloud's fit.
+        g.normals.resize(m, 3);
+        std::vector<char> cut(static_cast<size_t>(m), 0);
+#pragma omp parallel for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < m; ++i) {
+            const int p = members[static_cast<size_t>(i)];
+            g.normals.row(i) = normals.row(p);
+            for (int j = 0; j < N.k(); ++j) {
+                cut[i] = cut[i] || region[N.indices(p, j)] != regionId;
+            }
+        }
+        std::vector<int> cutRows;
+        for (Eigen::Index i = 0; i < m; ++i) {
+            if (cut[i]) {
+                cutRows.push_back(static_cast<int>(i));
+            }
+        }
+        pcaNormalsOfRows(g.points, g.neighbours, cutRows, g.normals);
+    }
     g.noise = estimateNoise(g.points, g.normals, g.neighbours, spacing, options.noiseSamples);
     g.smoothed =
         options.smoothing == SmoothingMode::Always ||

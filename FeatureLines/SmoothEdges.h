@@ -212,6 +212,14 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
                              int regionId, double spacing, const SmoothEdgeOptions& options = {});
 
+/// The same, given the cloud's normals over N (pcaNormals): a region point whose k nearest
+/// neighbours all lie in the region keeps its cloud normal (the same fit); only the points
+/// whose neighbourhood the region cuts are fitted again.
+RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
+                             const NormalMatrix& normals, const std::vector<int>& region,
+                             const std::vector<int>& members, int regionId, double spacing,
+                             const SmoothEdgeOptions& options = {});
+
 /// The noise estimate of SmoothEdgeOptions::noiseThreshold (x spacing): the median distance of
 /// a point from the quadric fitted to its neighbours (in its normal's frame, the point itself
 /// left out). Insensitive to curvature; about 0.9 sigma for normal noise sigma. At most

@@ -210,29 +210,57 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
         throw std::invalid_argument(
             "regionNeighbourhoods: region labels and neighbourhoods differ in size");
     }
-    std::unordered_map<int, int> local;
-    local.reserve(members.size() * 2);
-    for (size_t m = 0; m < members.size(); ++m) {
-        local.emplace(members[m], static_cast<int>(m));
+    // Row of each member in the sub-cloud: a table over the members' index range when the
+    // region fills a good part of it (a few large regions, the usual case), else a hash map
+    // (a small region spread over a large cloud).
+    const auto [lowest, highest] = std::minmax_element(members.begin(), members.end());
+    const int first = members.empty() ? 0 : *lowest;
+    const size_t range = members.empty() ? 0 : static_cast<size_t>(*highest - first) + 1;
+    const bool dense = range <= 8 * members.size() + 1024;
+    std::vector<int> localTable(dense ? range : 0, -1);
+    std::unordered_map<int, int> localMap;
+    if (!dense) {
+        localMap.reserve(members.size() * 2);
     }
+    for (size_t m = 0; m < members.size(); ++m) {
+        if (dense) {
+            localTable[static_cast<size_t>(members[m] - first)] = static_cast<int>(m);
+        } else {
+            localMap.emplace(members[m], static_cast<int>(m));
+        }
+    }
+    const auto local = [&](int q) {
+        if (dense) {
+            const size_t at = static_cast<size_t>(q - first);
+            return q >= first && at < range ? localTable[at] : -1;
+        }
+        const auto it = localMap.find(q);
+        return it == localMap.end() ? -1 : it->second;
+    };
+
     const int k = N.k();
     Neighbourhoods sub;
     sub.indices.resize(static_cast<Eigen::Index>(members.size()), k);
     sub.squaredDistances.resize(static_cast<Eigen::Index>(members.size()), k);
-    for (size_t m = 0; m < members.size(); ++m) {
-        const int p = members[m];
+    bool isolated = false; // a member with no neighbour in the region
+    bool unlisted = false; // a neighbour labelled regionId but not among the members
+#pragma omp parallel for schedule(static, 4096) reduction(|| : isolated, unlisted)
+    for (long m = 0; m < static_cast<long>(members.size()); ++m) {
+        const int p = members[static_cast<size_t>(m)];
         int filled = 0;
         for (int j = 0; j < k; ++j) {
             const int q = N.indices(p, j);
             if (region[q] == regionId) {
-                sub.indices(m, filled) = local.at(q);
+                const int row = local(q);
+                unlisted = unlisted || row < 0;
+                sub.indices(m, filled) = row;
                 sub.squaredDistances(m, filled) = N.squaredDistances(p, j);
                 ++filled;
             }
         }
         if (filled == 0) {
-            throw std::invalid_argument(
-                "regionNeighbourhoods: a region point has no neighbour in its region");
+            isolated = true;
+            continue;
         }
         // Sec. 2.1 fits over k neighbours; repeating the nearest in-region ones keeps the
         // row shape and only re-weights a point whose neighbourhood the band cut.
@@ -240,6 +268,14 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
             sub.indices(m, j) = sub.indices(m, r);
             sub.squaredDistances(m, j) = sub.squaredDistances(m, r);
         }
+    }
+    if (isolated) {
+        throw std::invalid_argument(
+            "regionNeighbourhoods: a region point has no neighbour in its region");
+    }
+    if (unlisted) {
+        throw std::invalid_argument("regionNeighbourhoods: a point labelled with the region is "
+                                    "missing from its member list");
     }
     return sub;
 }
