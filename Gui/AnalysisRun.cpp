@@ -44,7 +44,9 @@ bool AnalysisRun::start(FeatureLines::ExtractionInput input)
         };
         try {
             last.analysis = FeatureLines::analyseCached(in.points, in.cloudHash, in.options);
-            last.status = Outcome::Done;
+            // A cancel after the core's last stage report: the user asked to stop, so the
+            // result is not used (it stays in the cache for the next run).
+            last.status = cancelRequested ? Outcome::Cancelled : Outcome::Done;
         } catch (const featurelines::ExtractionCancelled&) {
             last.status = Outcome::Cancelled;
         } catch (const std::exception& e) {

@@ -96,6 +96,12 @@ std::string pythonValue(const Parameter& p, double v)
     return pythonNumber(v);
 }
 
+/// A new object (touched by its constructor) or one with changed properties.
+bool needsRecompute(const App::DocumentObject& object)
+{
+    return object.isTouched() || object.mustExecute() != 0;
+}
+
 QString colourName(const Base::Vector3f& c)
 {
     return QColor::fromRgbF(c.x, c.y, c.z).name();
@@ -157,8 +163,11 @@ TaskExtraction::TaskExtraction(ViewProviderExtraction* view)
     buildOptions();
     connectWidgets();
     setRunning(false);
+    setRunState("idle");
     optionsUi->progressBar->setVisible(false);
     thresholdsWidget->setEnabled(false);
+    thresholdsUi->labelRegion->setVisible(false);
+    thresholdsUi->comboRegion->setVisible(false);
     refresh();
 }
 
@@ -334,12 +343,14 @@ void TaskExtraction::startRun()
         in = FeatureLines::extractionInput(*e, changedOptions());
     } catch (const std::invalid_argument& error) {
         optionsUi->labelStatus->setText(QString::fromUtf8(error.what()));
+        setRunState("failed");
         return;
     }
     optionsUi->labelStatus->setText(tr("Analysing the cloud..."));
     optionsUi->progressBar->setValue(0);
     optionsUi->progressBar->setFormat(QLatin1String("%p%"));
     setRunning(true);
+    setRunState("running");
     run->start(std::move(in));
 }
 
@@ -363,9 +374,11 @@ void TaskExtraction::runFinished()
         optionsUi->labelStatus->setText(
             tr("Run cancelled: the document is as it was%1.")
                 .arg(analysed ? tr(", the thresholds below use the previous analysis") : QString()));
+        setRunState("cancelled");
         return;
     case AnalysisRun::Outcome::Failed:
         optionsUi->labelStatus->setText(tr("The analysis failed: %1").arg(outcome.message));
+        setRunState("failed");
         return;
     case AnalysisRun::Outcome::Done:
         break;
@@ -394,10 +407,18 @@ void TaskExtraction::runFinished()
             .arg(count));
     const bool anyAccepted = std::any_of(regions.begin(), regions.end(),
                                          [](const Region& r) { return !r.accepted.empty(); });
-    if (anyAccepted && (changed || e->mustExecute())) {
+    if (anyAccepted && (changed || needsRecompute(*e))) {
         recompute();
     }
     refresh();
+    setRunState("done");
+}
+
+void TaskExtraction::setRunState(const char* state)
+{
+    // For scripts and tests: where the last run stands (idle, running, done, cancelled,
+    // failed), once the panel shows its outcome.
+    optionsWidget->setProperty("run", QString::fromLatin1(state));
 }
 
 void TaskExtraction::adoptAnalysis()
@@ -456,7 +477,7 @@ void TaskExtraction::initialiseRegions()
             auto it = byRegion.find(g.region);
             held[g.region] = it != byRegion.end() ? it->second : e->Thresholds.getValues();
         }
-    } else if (!e->mustExecute() && e->isValid()) {
+    } else if (!needsRecompute(*e) && e->isValid()) {
         const std::vector<double>& used = e->UsedThresholds.getValues();
         const std::vector<long>& usedRegions = e->UsedThresholdRegions.getValues();
         for (size_t i = 0; i < used.size() && i < usedRegions.size(); ++i) {
@@ -683,7 +704,7 @@ bool TaskExtraction::accept()
     run->cancelAndWait();
     closePreview();
     FeatureLines::Extraction* e = extraction();
-    if (e && e->mustExecute()) {
+    if (e && needsRecompute(*e)) {
         // OK before any threshold was accepted keeps the object in its mode (Automatic for a
         // new one): it is computed as it stands.
         runLine("App.getDocument('" + documentName + "').recompute()");
@@ -698,9 +719,10 @@ bool TaskExtraction::reject()
     closing = true;
     run->cancelAndWait();
     closePreview();
-    runLine("Gui.getDocument('" + documentName + "').resetEdit()", true);
-    // Back to the document as it was before the panel opened: a new object goes again.
+    // Back to the document as it was before the panel opened: a new object goes again. Before
+    // resetEdit, which commits the transaction still open (Gui::Document::resetEdit).
     Gui::Command::abortCommand();
+    runLine("Gui.getDocument('" + documentName + "').resetEdit()", true);
     return true;
 }
 
@@ -767,10 +789,16 @@ void TaskExtraction::refreshStage()
 {
     Ui_TaskExtractionThresholds& t = *thresholdsUi;
     const Region* r = currentRegion();
+    // For scripts and tests: the state the texts describe, as numbers.
+    thresholdsWidget->setProperty(
+        "stage", QString::fromLatin1(r ? (r->choosing ? "a" : "b") : ""));
+    thresholdsWidget->setProperty("candidate", r && r->choosing ? r->candidate : none);
+    thresholdsWidget->setProperty("region", r ? r->id : -1);
     if (!analysed || !r) {
         t.labelStage->setText(analysed ? tr("The cloud has no smooth region to threshold.")
                                        : tr("The thresholds follow the analysis."));
         t.stageStack->setEnabled(false);
+        t.buttonBack->setVisible(false);
         return;
     }
     t.stageStack->setEnabled(true);
@@ -844,6 +872,10 @@ void TaskExtraction::refreshPreview()
         if (perInput.size() == analysis.geometry->inputToPoint.size()) {
             FeatureLines::scatterToInputPoints(*analysis.geometry, *g, values, perInput);
         }
+    } else if (g && perInput.size() == analysis.geometry->inputToPoint.size()) {
+        // No threshold yet: every point of the region is low, which shows where it lies.
+        FeatureLines::scatterToInputPoints(*analysis.geometry, *g,
+                                           std::vector<int>(g->members.size(), 0), perInput);
     }
     if (mode == PreviewMode::Off || !analysed || worldPoints.empty()) {
         t.labelLegend->clear();

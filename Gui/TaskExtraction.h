@@ -105,6 +105,7 @@ private:
     void startRun();
     void runFinished();
     void setRunning(bool running);
+    void setRunState(const char* state);
     void adoptAnalysis();
     void initialiseRegions();
 
