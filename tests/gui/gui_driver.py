@@ -149,6 +149,37 @@ def capture_message_box(action, screenshot_name=None):
     return seen
 
 
+def start_macro_recording(name):
+    """Macro > Macro recording... as a user starts it: the recorder's dialog gets `name` and
+    Start. Returns the path of the macro file Std_MacroStopRecord writes."""
+    folder = os.path.join(os.path.dirname(SCREENSHOTS), "macros")
+    os.makedirs(folder, exist_ok=True)
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Macro").SetString("MacroPath", folder)
+    path = os.path.join(folder, name + ".FCMacro")
+    if os.path.exists(path):
+        os.remove(path)
+
+    def fill():
+        dialog = QtWidgets.QApplication.activeModalWidget()
+        entry = dialog.findChild(QtWidgets.QLineEdit, "lineEditPath") if dialog else None
+        if entry is None:
+            QtCore.QTimer.singleShot(50, fill)
+            return
+        entry.setText(name)
+        dialog.findChild(QtWidgets.QPushButton, "buttonStart").click()
+
+    QtCore.QTimer.singleShot(50, fill)
+    FreeCADGui.runCommand("Std_DlgMacroRecord")
+    return path
+
+
+def stop_macro_recording(path):
+    FreeCADGui.runCommand("Std_MacroStopRecord")
+    check(os.path.isfile(path), "the recorder wrote " + path)
+    with open(path) as f:
+        return f.read()
+
+
 # ---- Screenshots --------------------------------------------------------------------------
 
 def settle(seconds=0.3):

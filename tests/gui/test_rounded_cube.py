@@ -2,8 +2,8 @@
 """Fig. 7 of Demarsin et al. (2008) in the GUI alone: a rounded cube's cloud selected, Extract
 feature lines run, the candidate moved with Higher and Lower, the corner threshold accepted (8
 closed corner loops), a lower threshold added and accepted (6 face loops more), Done; then undo
-and redo. The document is checked after every step against the shape: flat faces (curvature 0),
-fillets (1/(2r)), corners (1/r)."""
+and redo, and the macro recorded meanwhile replayed. The document is checked after every step
+against the shape: flat faces (curvature 0), fillets (1/(2r)), corners (1/r)."""
 
 import os
 import sys
@@ -27,6 +27,7 @@ def setup():
     doc = FreeCAD.newDocument("RoundedCube")
     state["doc"] = doc
     state["cloud"] = g.add_cloud(doc, sampled_shapes.rounded_cube(EDGE, RADIUS, SPACING, 6))
+    state["macro"] = g.start_macro_recording("rounded_cube")
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(state["cloud"])
 
@@ -148,6 +149,11 @@ def closed():
     g.check(all(c[:3] == smooth[:3] for c in colours), "smooth lines in the smooth colour")
     g.view_image("rounded_cube_lines")
     g.screenshot("rounded_cube_done")
+    macro = g.stop_macro_recording(state["macro"])
+    for line in ("addObject('FeatureLines::Extraction', 'FeatureLines')",
+                 ".ThresholdMode = 'Explicit'", ".Thresholds = [", ".recompute()"):
+        g.check(line in macro, "the macro records %s:\n%s" % (line, macro))
+    state["macro_text"] = macro
 
 
 def undo():
@@ -161,6 +167,24 @@ def undo():
     g.check(lines is not None, "redo brings it back")
     g.check(list(lines.Thresholds) == [state["tau1"], state["tau2"]], "with both thresholds")
     g.check(lines.SmoothLineCount == 14, "and its 14 loops")
+
+
+def replay_macro():
+    import FreeCAD
+    import FreeCADGui
+
+    # The recorded macro alone makes the same lines: undo, then run it in the namespace FreeCAD
+    # runs macros in (App and Gui defined).
+    name = state["lines"].Name
+    FreeCADGui.runCommand("Std_Undo")
+    doc = state["doc"]
+    g.check(doc.getObject(name) is None, "undone")
+    namespace = {"App": FreeCAD, "Gui": FreeCADGui}
+    exec(compile(state["macro_text"], state["macro"], "exec"), namespace)
+    lines = doc.getObject(name)
+    g.check(lines is not None, "the macro adds the object again")
+    g.check(list(lines.Thresholds) == [state["tau1"], state["tau2"]], "with both thresholds")
+    g.check(lines.SmoothLineCount == 14 and lines.ClosedLineCount == 14, "and the 14 loops")
 
 
 def build(steps):
@@ -177,6 +201,7 @@ def build(steps):
     steps.then("the panel closed with the lines kept", closed,
                wait_for=lambda: not g.panel_is_open())
     steps.then("undo and redo", undo)
+    steps.then("undo, then the recorded macro makes the lines again", replay_macro)
 
 
 g.start("rounded cube, Fig. 7", build)
