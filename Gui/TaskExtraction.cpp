@@ -893,11 +893,13 @@ void TaskExtraction::refreshPreview()
         const char* names[] = {QT_TR_NOOP("low"), QT_TR_NOOP("inner"), QT_TR_NOOP("border"),
                                QT_TR_NOOP("noisy")};
         for (int l = 0; l < 4; ++l) {
-            legend += QString::fromLatin1("<span style=\"color:%1\">\u25a0</span> %2&nbsp;&nbsp; ")
+            legend += QString::fromUtf8("<span style=\"color:%1\">\u25a0</span> %2&nbsp;&nbsp; ")
                           .arg(colourName(PointPreview::labelColour(l)), tr(names[l]));
         }
-        legend += QString::fromLatin1("<span style=\"color:%1\">\u25a0</span> %2")
-                      .arg(colourName(PointPreview::labelColour(-1)), tr("other regions"));
+        if (regions.size() > 1) {
+            legend += QString::fromUtf8("<span style=\"color:%1\">\u25a0</span> %2")
+                          .arg(colourName(PointPreview::labelColour(-1)), tr("other regions"));
+        }
         t.labelLegend->setText(legend);
     } else {
         // Every region's patches at its accepted thresholds (and the candidate).

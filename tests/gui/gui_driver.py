@@ -127,6 +127,15 @@ def select_option(name, index):
     find(QtWidgets.QComboBox, name).setCurrentIndex(index)
 
 
+def fold_task_box(content_name):
+    """Folds the task box holding the widget `content_name`, as a click on its header does."""
+    widget = find(QtWidgets.QWidget, content_name)
+    while widget is not None and widget.metaObject().className() != "Gui::TaskView::TaskBox":
+        widget = widget.parentWidget()
+    check(widget is not None, "%s is in no task box" % content_name)
+    QtCore.QMetaObject.invokeMethod(widget, "showHide")
+
+
 def capture_message_box(action, screenshot_name=None):
     """Runs `action`, which opens a modal message box: returns its title and text after
     pressing its default button (from a timer, since the box runs its own event loop)."""
@@ -219,9 +228,14 @@ def view_image(name, width=1000, height=750):
 # ---- Set-up -------------------------------------------------------------------------------
 
 def prepare_window():
-    """The Feature Lines workbench, and a combo view wide enough for the task panel."""
+    """The Feature Lines workbench, no start page, and a combo view wide enough for the task
+    panel."""
     FreeCADGui.activateWorkbench("FeatureLinesWorkbench")
     mw = main_window()
+    # The start page (a web view still loading) is no part of the test.
+    area = mw.findChild(QtWidgets.QMdiArea)
+    if area is not None:
+        area.closeAllSubWindows()
     mw.showMaximized()
     dock = mw.findChild(QtWidgets.QDockWidget, "Combo View")
     if dock is not None:
@@ -269,6 +283,9 @@ class Steps:
 
     def run(self):
         log("== %s" % self.name)
+        stale = os.path.join(SCREENSHOTS, self._slug() + "-failure.png")
+        if os.path.exists(stale):
+            os.remove(stale)
         QtCore.QTimer.singleShot(0, self._next)
         QtCore.QTimer.singleShot(int(self.limit * 1000), self._over_time)
 
@@ -305,9 +322,12 @@ class Steps:
         self.index += 1
         QtCore.QTimer.singleShot(20, self._next)
 
+    def _slug(self):
+        return re.sub(r"\W+", "_", self.name).strip("_")
+
     def _failure_screenshot(self):
         try:
-            screenshot(re.sub(r"\W+", "_", self.name).strip("_") + "-failure")
+            screenshot(self._slug() + "-failure")
         except BaseException:
             pass
 
