@@ -150,6 +150,7 @@ int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds,
 {
     const Eigen::Index n = g.points.rows();
     std::vector<int> level(static_cast<size_t>(n), 0);
+#pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
         for (double t : thresholds) {
             level[i] += g.curvature[i] > t ? 1 : 0;

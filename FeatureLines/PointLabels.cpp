@@ -47,7 +47,10 @@ std::vector<PointLabel> labelPoints(const Eigen::VectorXd& curvature, double thr
     auto high = [&](int i) { return curvature[i] > threshold; };
 
     // Sec. 3: inner points first, since border points are defined by their inner neighbours.
-    for (int i : region) {
+    const long m = static_cast<long>(region.size());
+#pragma omp parallel for schedule(static, 4096)
+    for (long r = 0; r < m; ++r) {
+        const int i = region[static_cast<size_t>(r)];
         if (!high(i)) {
             labels[i] = PointLabel::Low;
             continue;
@@ -66,7 +69,11 @@ std::vector<PointLabel> labelPoints(const Eigen::VectorXd& curvature, double thr
         }
         labels[i] = (allHigh && seen > 0) ? PointLabel::Inner : PointLabel::Noisy;
     }
-    for (int i : region) {
+    // Border points are found among the others with the inner labels final, then marked.
+    std::vector<char> border(region.size(), 0);
+#pragma omp parallel for schedule(static, 4096)
+    for (long r = 0; r < m; ++r) {
+        const int i = region[static_cast<size_t>(r)];
         if (labels[i] != PointLabel::Noisy) {
             continue;
         }
@@ -76,8 +83,11 @@ std::vector<PointLabel> labelPoints(const Eigen::VectorXd& curvature, double thr
                 ++inner;
             }
         }
-        if (inner >= options.minInnerNeighbours) {
-            labels[i] = PointLabel::Border;
+        border[static_cast<size_t>(r)] = inner >= options.minInnerNeighbours;
+    }
+    for (long r = 0; r < m; ++r) {
+        if (border[static_cast<size_t>(r)]) {
+            labels[region[static_cast<size_t>(r)]] = PointLabel::Border;
         }
     }
     return labels;

@@ -140,27 +140,35 @@ double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& lab
     const long count = static_cast<long>((border.size() + stride - 1) / stride);
     const Neighbourhoods& N = g.neighbours;
     long straddling = 0;
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : straddling)
-    for (long s = 0; s < count; ++s) {
-        const int p = border[static_cast<size_t>(s) * stride];
-        const double reach2 = reach * reach * N.squaredDistances(p, N.k() - 1);
-        // Breadth first over the neighbourhoods, within the reach.
-        std::vector<int> queue{p};
-        bool outside = false;
-        for (size_t head = 0; head < queue.size() && !outside; ++head) {
-            const int q = queue[head];
-            for (int j = 0; j < N.k() && !outside; ++j) {
-                const int r = N.indices(q, j);
-                if ((g.points.row(r) - g.points.row(p)).squaredNorm() > reach2 ||
-                    std::find(queue.begin(), queue.end(), r) != queue.end()) {
-                    continue;
+#pragma omp parallel reduction(+ : straddling)
+    {
+        // The sample that last queued each point: the queue's membership test in O(1).
+        std::vector<long> queuedBy(labels.size(), -1);
+        std::vector<int> queue;
+#pragma omp for schedule(dynamic, 16)
+        for (long s = 0; s < count; ++s) {
+            const int p = border[static_cast<size_t>(s) * stride];
+            const double reach2 = reach * reach * N.squaredDistances(p, N.k() - 1);
+            // Breadth first over the neighbourhoods, within the reach.
+            queue.assign(1, p);
+            queuedBy[static_cast<size_t>(p)] = s;
+            bool outside = false;
+            for (size_t head = 0; head < queue.size() && !outside; ++head) {
+                const int q = queue[head];
+                for (int j = 0; j < N.k() && !outside; ++j) {
+                    const int r = N.indices(q, j);
+                    if (queuedBy[static_cast<size_t>(r)] == s ||
+                        (g.points.row(r) - g.points.row(p)).squaredNorm() > reach2) {
+                        continue;
+                    }
+                    const double v = g.curvature[r];
+                    outside = v <= low || v > high;
+                    queue.push_back(r);
+                    queuedBy[static_cast<size_t>(r)] = s;
                 }
-                const double v = g.curvature[r];
-                outside = v <= low || v > high;
-                queue.push_back(r);
             }
+            straddling += outside ? 1 : 0;
         }
-        straddling += outside ? 1 : 0;
     }
     return static_cast<double>(straddling) / static_cast<double>(count);
 }
@@ -261,29 +269,41 @@ double medianLocalContrast(const RegionGeometry& g, const Eigen::VectorXd& curva
     return contrasts.empty() ? 0.0 : median(std::move(contrasts));
 }
 
-/// The largest patch of curvature level (low, high]: points with values in it whose whole
-/// 1-ring is in it too (the inner points of Sec. 3 for that level), connected through the
-/// 1-rings; returns its number of points.
-int largestPatch(const Eigen::VectorXd& curvature, double low, double high,
-                 const RingNeighbourhoods& ring)
+/// The largest patches of the curvature levels (low, tau] and (tau, high]: points with values
+/// in the level whose whole 1-ring is in it too (the inner points of Sec. 3 for that level),
+/// connected through the 1-rings; returns their numbers of points, {above, below}. Both levels
+/// are searched in one sweep: a patch never leaves its level.
+std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low, double tau,
+                                   double high, const RingNeighbourhoods& ring)
 {
     const Eigen::Index n = curvature.size();
-    auto inLevel = [&](int i) { return curvature[i] > low && curvature[i] <= high; };
-    std::vector<char> interior(static_cast<size_t>(n), 0);
+    constexpr char outside = 0, above = 1, below = 2, seen = 3;
+    const auto levelOf = [&](int i) {
+        const double c = curvature[i];
+        return c > tau && c <= high ? above : (c > low && c <= tau ? below : outside);
+    };
+    // Per point: the level it is an interior point of, or outside.
+    std::vector<char> state(static_cast<size_t>(n), outside);
+#pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        if (!inLevel(static_cast<int>(i)) || ring.size(i) == 0) {
+        const char level = levelOf(static_cast<int>(i));
+        if (level == outside || ring.size(i) == 0) {
             continue;
         }
-        interior[i] = std::all_of(ring.begin(i), ring.end(i), inLevel);
+        bool interior = true;
+        for (const int* q = ring.begin(i); q != ring.end(i) && interior; ++q) {
+            interior = levelOf(*q) == level;
+        }
+        state[i] = interior ? level : outside;
     }
-    std::vector<char> seen(static_cast<size_t>(n), 0);
     std::vector<int> stack;
-    int largest = 0;
+    int largest[3] = {0, 0, 0};
     for (Eigen::Index s = 0; s < n; ++s) {
-        if (!interior[s] || seen[s]) {
+        const char level = state[s];
+        if (level != above && level != below) {
             continue;
         }
-        seen[s] = 1;
+        state[s] = seen;
         stack.assign(1, static_cast<int>(s));
         int size = 0;
         while (!stack.empty()) {
@@ -291,15 +311,15 @@ int largestPatch(const Eigen::VectorXd& curvature, double low, double high,
             stack.pop_back();
             ++size;
             for (const int* q = ring.begin(p); q != ring.end(p); ++q) {
-                if (interior[*q] && !seen[*q]) {
-                    seen[*q] = 1;
+                if (state[*q] == level) {
+                    state[*q] = seen;
                     stack.push_back(*q);
                 }
             }
         }
-        largest = std::max(largest, size);
+        largest[static_cast<int>(level)] = std::max(largest[static_cast<int>(level)], size);
     }
-    return largest;
+    return {largest[static_cast<int>(above)], largest[static_cast<int>(below)]};
 }
 
 /// Normals flipped so that neighbours agree: breadth first over the neighbourhoods from the
@@ -1075,8 +1095,8 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
             static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
         d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
                                    range.patchHigh, a.straddleReach);
-        d.largestPatch = largestPatch(region.curvature, tau, range.patchHigh, region.ring);
-        d.largestPatchBelow = largestPatch(region.curvature, range.patchLow, tau, region.ring);
+        std::tie(d.largestPatch, d.largestPatchBelow) =
+            largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
         const bool patch = d.largestPatch >= minInner;
         const bool patchBelow = d.largestPatchBelow >= minInner;
         const bool levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
