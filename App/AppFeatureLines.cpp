@@ -358,9 +358,9 @@ public:
         add_keyword_method(
             "regionPatches", &Module::regionPatchesOf,
             "regionPatches(extraction, region, thresholds) -> list\n"
-            "Per point of the source cloud its patch at the given thresholds: the connected points\n"
-            "of the region between the same two thresholds, numbered from 0; -1 outside the\n"
-            "region.");
+            "Per point of the source cloud its patch at the given thresholds: the connected\n"
+            "points of the region between the same two thresholds, numbered from 0; -1 outside\n"
+            "the region.");
         add_varargs_method(
             "parameters", &Module::listParameters,
             "parameters() -> list of dict\n"
@@ -687,8 +687,7 @@ private:
         double threshold = 0.0;
         static const char* names[] = {"extraction", "region", "threshold", nullptr};
         if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "Oid",
-                                         const_cast<char**>(names), &object, &region,
-                                         &threshold)) {
+                                         const_cast<char**>(names), &object, &region, &threshold)) {
             throw Py::Exception();
         }
         const AnalysedExtraction a = analysedExtraction(object, "regionLabels");

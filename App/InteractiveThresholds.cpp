@@ -79,7 +79,8 @@ ExtractionInput extractionInput(const Extraction& extraction, const ParameterVal
     }
     ExtractionInput input;
     input.options = toExtractionOptions(values);
-    const Points::PointKernel& kernel = static_cast<const Points::Feature*>(source)->Points.getValue();
+    const Points::PointKernel& kernel =
+        static_cast<const Points::Feature*>(source)->Points.getValue();
     input.points = kernelPoints(kernel);
     input.cloudHash = hashCloud(input.points);
     input.toWorld = kernel.getTransform();

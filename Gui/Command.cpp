@@ -25,9 +25,10 @@ CmdFeatureLinesExtract::CmdFeatureLinesExtract() : Command("FeatureLines_Extract
     sAppModule = "FeatureLines";
     sGroup = QT_TR_NOOP("FeatureLines");
     sMenuText = QT_TR_NOOP("Extract feature lines...");
-    sToolTipText = QT_TR_NOOP("Extracts the closed feature lines (sharp edges, fillet borders, the\n"
-                              "boundary) of the selected point cloud, choosing the curvature\n"
-                              "thresholds on its histogram in the task panel.");
+    sToolTipText =
+        QT_TR_NOOP("Extracts the closed feature lines (sharp edges, fillet borders, the\n"
+                   "boundary) of the selected point cloud, choosing the curvature\n"
+                   "thresholds on its histogram in the task panel.");
     sWhatsThis = "FeatureLines_Extract";
     sStatusTip = sToolTipText;
     sPixmap = "FeatureLines_Extract";
@@ -57,8 +58,9 @@ void CmdFeatureLinesExtract::activated(int)
     doCommand(Doc, "import FeatureLines");
     doCommand(Doc, "App.getDocument('%s').addObject('FeatureLines::Extraction', '%s')", doc,
               name.c_str());
-    doCommand(Doc, "App.getDocument('%s').getObject('%s').Source = App.getDocument('%s').getObject('%s')",
-              doc, name.c_str(), doc, cloud->getNameInDocument());
+    doCommand(
+        Doc, "App.getDocument('%s').getObject('%s').Source = App.getDocument('%s').getObject('%s')",
+        doc, name.c_str(), doc, cloud->getNameInDocument());
     // The task panel runs the analysis, proposes the thresholds and recomputes; it commits
     // this transaction on OK and aborts it (the object goes) on Cancel.
     doCommand(Gui, "Gui.getDocument('%s').setEdit('%s', 0)", doc, name.c_str());

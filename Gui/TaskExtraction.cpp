@@ -62,8 +62,8 @@ constexpr double none = std::numeric_limits<double>::quiet_NaN();
 
 /// The options shown in the panel: the ones that decide the regions and their histograms. The
 /// others are in the property editor (their defaults scale with the cloud).
-const char* const panelOptions[] = {"NeighbourCount", "GrowAngle",      "MinFilletRadius",
-                                    "Smoothing",      "HistogramBins",  "OutlierPercent"};
+const char* const panelOptions[] = {"NeighbourCount", "GrowAngle",     "MinFilletRadius",
+                                    "Smoothing",      "HistogramBins", "OutlierPercent"};
 
 /// A number as Python writes it back exactly.
 std::string pythonNumber(double v)
@@ -119,8 +119,7 @@ std::pair<int, int> regionLines(const FeatureLines::Extraction& e, int region)
     }
     size_t i = 0;
     for (TopoDS_Iterator it(shape); it.More(); it.Next(), ++i) {
-        if (i < regions.size() && regions[i] == region &&
-            it.Value().ShapeType() == TopAbs_WIRE) {
+        if (i < regions.size() && regions[i] == region && it.Value().ShapeType() == TopAbs_WIRE) {
             ++lines;
             closed += BRep_Tool::IsClosed(TopoDS::Wire(it.Value())) ? 1 : 0;
         }
@@ -138,7 +137,8 @@ TaskExtraction::TaskExtraction(ViewProviderExtraction* view)
     const QPixmap icon = Gui::BitmapFactory().pixmap("FeatureLines_Extract");
     optionsWidget = new QWidget();
     optionsUi->setupUi(optionsWidget);
-    auto* optionsBox = new Gui::TaskView::TaskBox(icon, optionsWidget->windowTitle(), true, nullptr);
+    auto* optionsBox =
+        new Gui::TaskView::TaskBox(icon, optionsWidget->windowTitle(), true, nullptr);
     optionsBox->groupLayout()->addWidget(optionsWidget);
     Content.push_back(optionsBox);
 
@@ -200,10 +200,9 @@ void TaskExtraction::buildOptions()
     const FeatureLines::ParameterValues values = e->parameterValues();
     const App::DocumentObject* source = e->Source.getValue();
     if (const auto* cloud = dynamic_cast<const Points::Feature*>(source)) {
-        optionsUi->labelSource->setText(
-            tr("Cloud: %1 (%2 points)")
-                .arg(QString::fromUtf8(cloud->Label.getValue()))
-                .arg(cloud->Points.getValue().size()));
+        optionsUi->labelSource->setText(tr("Cloud: %1 (%2 points)")
+                                            .arg(QString::fromUtf8(cloud->Label.getValue()))
+                                            .arg(cloud->Points.getValue().size()));
     } else {
         optionsUi->labelSource->setText(tr("No point cloud: set the Source property."));
     }
@@ -373,7 +372,8 @@ void TaskExtraction::runFinished()
     case AnalysisRun::Outcome::Cancelled:
         optionsUi->labelStatus->setText(
             tr("Run cancelled: the document is as it was%1.")
-                .arg(analysed ? tr(", the thresholds below use the previous analysis") : QString()));
+                .arg(analysed ? tr(", the thresholds below use the previous analysis")
+                              : QString()));
         setRunState("cancelled");
         return;
     case AnalysisRun::Outcome::Failed:
@@ -392,19 +392,17 @@ void TaskExtraction::runFinished()
     bool changed = false;
     for (const auto& [name, value] : changes.scalars) {
         const Parameter* p = FeatureLines::findParameter(name);
-        changed = runLine(objectCommand() + "." + name + " = " + pythonValue(*p, value)) ||
-                  changed;
+        changed = runLine(objectCommand() + "." + name + " = " + pythonValue(*p, value)) || changed;
     }
     analysis = outcome.analysis;
     input = outcome.input;
     input.options.progress = nullptr;
     adoptAnalysis();
     const size_t count = analysis.regions ? analysis.regions->geometry.size() : 0;
-    optionsUi->labelStatus->setText(
-        tr("%1 points, spacing %2, %3 smooth region(s).")
-            .arg(analysis.geometry->inputToPoint.size())
-            .arg(shortNumber(analysis.geometry->spacing))
-            .arg(count));
+    optionsUi->labelStatus->setText(tr("%1 points, spacing %2, %3 smooth region(s).")
+                                        .arg(analysis.geometry->inputToPoint.size())
+                                        .arg(shortNumber(analysis.geometry->spacing))
+                                        .arg(count));
     const bool anyAccepted = std::any_of(regions.begin(), regions.end(),
                                          [](const Region& r) { return !r.accepted.empty(); });
     if (anyAccepted && (changed || needsRecompute(*e))) {
@@ -592,9 +590,8 @@ void TaskExtraction::addThreshold(bool higher)
         *r = trial;
         thresholdsUi->labelMessage->clear();
     } else {
-        thresholdsUi->labelMessage->setText(tr("No %1 valley: %2")
-                                                .arg(higher ? tr("higher") : tr("lower"))
-                                                .arg(trial.note));
+        thresholdsUi->labelMessage->setText(
+            tr("No %1 valley: %2").arg(higher ? tr("higher") : tr("lower")).arg(trial.note));
     }
     refresh();
 }
@@ -640,8 +637,7 @@ std::string TaskExtraction::objectCommand() const
 bool TaskExtraction::runLine(const std::string& command, bool gui)
 {
     try {
-        Gui::Command::doCommand(gui ? Gui::Command::Gui : Gui::Command::Doc, "%s",
-                                command.c_str());
+        Gui::Command::doCommand(gui ? Gui::Command::Gui : Gui::Command::Doc, "%s", command.c_str());
         return true;
     } catch (const Base::Exception& e) {
         thresholdsUi->labelMessage->setText(QString::fromUtf8(e.what()));
@@ -778,7 +774,8 @@ void TaskExtraction::refreshHistogram()
         }
         return;
     }
-    const FeatureLines::RegionHistogram rh = FeatureLines::regionHistogram(*g, input.options.smooth);
+    const FeatureLines::RegionHistogram rh =
+        FeatureLines::regionHistogram(*g, input.options.smooth);
     h->setHistogram(std::vector<double>(rh.counts.begin(), rh.counts.end()), rh.minimum,
                     rh.binWidth);
     h->setOutlierCut(rh.outlierCut);
@@ -790,8 +787,7 @@ void TaskExtraction::refreshStage()
     Ui_TaskExtractionThresholds& t = *thresholdsUi;
     const Region* r = currentRegion();
     // For scripts and tests: the state the texts describe, as numbers.
-    thresholdsWidget->setProperty(
-        "stage", QString::fromLatin1(r ? (r->choosing ? "a" : "b") : ""));
+    thresholdsWidget->setProperty("stage", QString::fromLatin1(r ? (r->choosing ? "a" : "b") : ""));
     thresholdsWidget->setProperty("candidate", r && r->choosing ? r->candidate : none);
     thresholdsWidget->setProperty("region", r ? r->id : -1);
     if (!analysed || !r) {
@@ -831,8 +827,9 @@ void TaskExtraction::refreshStage()
             tr("<b>Candidate \u03c4 = %1</b>%2. Does it divide the points right? Accept it, or "
                "search a lower or higher valley.%3")
                 .arg(shortNumber(r->candidate))
-                .arg(accepted.isEmpty() ? QString()
-                                        : tr(" (accepted: %1)").arg(accepted.join(QLatin1String(", "))))
+                .arg(accepted.isEmpty()
+                         ? QString()
+                         : tr(" (accepted: %1)").arg(accepted.join(QLatin1String(", "))))
                 .arg(counts));
         return;
     }
@@ -910,7 +907,8 @@ void TaskExtraction::refreshPreview()
             if (region.choosing && std::isfinite(region.candidate)) {
                 levels.push_back(region.candidate);
             }
-            const featurelines::RegionGeometry& rg = FeatureLines::regionGeometry(analysis, region.id);
+            const featurelines::RegionGeometry& rg =
+                FeatureLines::regionGeometry(analysis, region.id);
             std::vector<int> patchOf;
             next = FeatureLines::regionPatches(rg, levels, next, patchOf);
             FeatureLines::scatterToInputPoints(*analysis.geometry, rg, patchOf, patch);
