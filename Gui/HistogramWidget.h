@@ -60,7 +60,7 @@ public:
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
 
-signals:
+Q_SIGNALS:
     /// The user clicked in the plot: the curvature value under the cursor.
     void valueClicked(double value);
 

@@ -37,16 +37,7 @@
 #include "AnalysisRun.h"
 #include "ExtractionFeature.h"
 #include "ExtractionParameters.h"
-// FCConfig.h sets QT_NO_KEYWORDS; HistogramWidget.h is plain Qt and may say `signals`.
-#ifndef signals
-#define signals Q_SIGNALS
-#define FEATURELINES_DEFINED_SIGNALS
-#endif
 #include "HistogramWidget.h"
-#ifdef FEATURELINES_DEFINED_SIGNALS
-#undef signals
-#undef FEATURELINES_DEFINED_SIGNALS
-#endif
 #include "PointPreview.h"
 #include "ViewProviderExtraction.h"
 #include "ui_TaskExtractionOptions.h"
