@@ -319,6 +319,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
             }
         }
     }
+    result.order.assign(original.begin(), original.end());
     return result;
 }
 

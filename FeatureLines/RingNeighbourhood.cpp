@@ -135,64 +135,67 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
     {
         Candidates candidates(k + 1);
         std::vector<int> order, hull;
-#pragma omp for schedule(static, 4096)
-        for (Eigen::Index i = 0; i < n; ++i) {
-            std::vector<int>& rings = blockRings[static_cast<size_t>(i / block)];
-            const Eigen::Vector3d normal = normals.row(i).transpose();
-            if (!(normal.norm() > 0.0) || !normal.allFinite()) {
-                continue;
-            }
-            const Eigen::Vector3d w = normal.normalized();
-            const Eigen::Vector3d u = w.unitOrthogonal();
-            const Eigen::Vector3d v = w.cross(u);
-            const double tooClose = coincidentFraction * N.squaredDistances(i, k - 1);
-
-            // Floater and Reimers: q is a Delaunay neighbour of p (at the origin) iff its
-            // half-plane {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff
-            // 2 q / |q|^2 is a vertex of the convex hull of these points and the origin.
-            candidates.clear();
-            candidates.add(0.0, 0.0, -1);
-            for (int j = 0; j < k; ++j) {
-                const int q = N.indices(i, j);
-                const Eigen::Vector3d d = (P.row(q) - P.row(i)).transpose();
-                const double x = d.dot(u);
-                const double y = d.dot(v);
-                const double s = x * x + y * y;
-                if (!(s > tooClose)) {
+#pragma omp for schedule(static, 1)
+        for (Eigen::Index b = 0; b < blocks; ++b) {
+            std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
+            for (Eigen::Index r = b * block; r < std::min(n, (b + 1) * block); ++r) {
+                const Eigen::Index i = N.visit(r);
+                const Eigen::Vector3d normal = normals.row(i).transpose();
+                if (!(normal.norm() > 0.0) || !normal.allFinite()) {
                     continue;
                 }
-                candidates.add(2.0 * x / s, 2.0 * y / s, q);
-            }
-            convexHull(candidates, order, hull);
+                const Eigen::Vector3d w = normal.normalized();
+                const Eigen::Vector3d u = w.unitOrthogonal();
+                const Eigen::Vector3d v = w.cross(u);
+                const double tooClose = coincidentFraction * N.squaredDistances(i, k - 1);
 
-            // The hull runs counter-clockwise, so its vertices are already in angular order
-            // around the point, which lies inside or on it. A border point is a vertex of its
-            // own hull: the ring then starts just after it and fans across the inside. Else it
-            // starts at the direction closest to -u (angle -pi), as atan2 would sort it.
-            const std::size_t size = hull.size();
-            std::size_t start = 0;
-            double smallest = std::numeric_limits<double>::infinity();
-            for (std::size_t h = 0; h < size; ++h) {
-                const int c = hull[h];
-                if (candidates.index[c] < 0) {
-                    start = h + 1;
-                    break;
+                // Floater and Reimers: q is a Delaunay neighbour of p (at the origin) iff its
+                // half-plane {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff
+                // 2 q / |q|^2 is a vertex of the convex hull of these points and the origin.
+                candidates.clear();
+                candidates.add(0.0, 0.0, -1);
+                for (int j = 0; j < k; ++j) {
+                    const int q = N.indices(i, j);
+                    const Eigen::Vector3d d = (P.row(q) - P.row(i)).transpose();
+                    const double x = d.dot(u);
+                    const double y = d.dot(v);
+                    const double s = x * x + y * y;
+                    if (!(s > tooClose)) {
+                        continue;
+                    }
+                    candidates.add(2.0 * x / s, 2.0 * y / s, q);
                 }
-                const double angle = pseudoAngle(candidates.x[c], candidates.y[c]);
-                if (angle < smallest) {
-                    smallest = angle;
-                    start = h;
+                convexHull(candidates, order, hull);
+
+                // The hull runs counter-clockwise, so its vertices are already in angular order
+                // around the point, which lies inside or on it. A border point is a vertex of its
+                // own hull: the ring then starts just after it and fans across the inside. Else it
+                // starts at the direction closest to -u (angle -pi), as atan2 would sort it.
+                const std::size_t size = hull.size();
+                std::size_t start = 0;
+                double smallest = std::numeric_limits<double>::infinity();
+                for (std::size_t h = 0; h < size; ++h) {
+                    const int c = hull[h];
+                    if (candidates.index[c] < 0) {
+                        start = h + 1;
+                        break;
+                    }
+                    const double angle = pseudoAngle(candidates.x[c], candidates.y[c]);
+                    if (angle < smallest) {
+                        smallest = angle;
+                        start = h;
+                    }
                 }
+                int count = 0;
+                for (std::size_t h = 0; h < size; ++h) {
+                    const int q = candidates.index[hull[(start + h) % size]];
+                    if (q >= 0) {
+                        rings.push_back(q);
+                        ++count;
+                    }
+                }
+                counts[i] = count;
             }
-            int count = 0;
-            for (std::size_t h = 0; h < size; ++h) {
-                const int q = candidates.index[hull[(start + h) % size]];
-                if (q >= 0) {
-                    rings.push_back(q);
-                    ++count;
-                }
-            }
-            counts[i] = count;
         }
     }
 
@@ -206,7 +209,12 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
 #pragma omp parallel for schedule(static, 1) num_threads(threadCount(options.threads))
     for (Eigen::Index b = 0; b < blocks; ++b) {
         std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
-        std::copy(rings.begin(), rings.end(), result.indices.begin() + result.offsets[b * block]);
+        auto from = rings.begin();
+        for (Eigen::Index r = b * block; r < std::min(n, (b + 1) * block); ++r) {
+            const Eigen::Index i = N.visit(r);
+            std::copy(from, from + counts[i], result.indices.begin() + result.offsets[i]);
+            from += counts[i];
+        }
         std::vector<int>().swap(rings);
     }
     return result;

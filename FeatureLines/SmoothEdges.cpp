@@ -57,8 +57,9 @@ std::vector<double> valuesOf(const RegionGeometry& region, const std::vector<int
 Eigen::VectorXd averageOverNeighbours(const Eigen::VectorXd& values, const Neighbourhoods& N)
 {
     Eigen::VectorXd averaged(values.size());
-#pragma omp parallel for schedule(static)
-    for (Eigen::Index i = 0; i < values.size(); ++i) {
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index r = 0; r < values.size(); ++r) {
+        const Eigen::Index i = N.visit(r);
         double sum = values[i];
         for (int j = 0; j < N.k(); ++j) {
             sum += values[N.indices(i, j)];

@@ -53,6 +53,11 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
 
     PointMatrix current = P;
     PointMatrix moved(m, 3);
+    // The subset of all points in row order (a whole region) needs no copying back.
+    bool everyRow = m == n;
+    for (Eigen::Index s = 0; s < m && everyRow; ++s) {
+        everyRow = subset[s] == s;
+    }
     // One umbrella step for every subset point from the same positions (Jacobi), so the
     // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
     auto step = [&](double factor) {
@@ -71,6 +76,11 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
             mean /= count;
             moved.row(s) = current.row(i) + factor * (mean - current.row(i));
         }
+        if (everyRow) {
+            current.swap(moved); // every row moved
+            return;
+        }
+#pragma omp parallel for schedule(static, 4096)
         for (Eigen::Index s = 0; s < m; ++s) {
             current.row(subset[s]) = moved.row(s);
         }
