@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <numeric>
 
 #include "FeatureLines/CloudIO.h"
@@ -294,18 +295,50 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
         rr.points = static_cast<int>(g.members.size());
         rr.noise = g.noise;
         rr.smoothed = g.smoothed;
-        try {
-            rr.histogram = regionThreshold(g, options.smooth).histogram;
-        } catch (const std::invalid_argument&) {
-            // One curvature value only: an empty histogram tells the user there is no valley.
-        }
         rr.thresholds = regionThresholdList(g, options, rr);
+        if (!rr.decisions.empty()) {
+            // The automatic search starts with this very search, on all the region's values.
+            rr.histogram = rr.decisions.front().result.histogram;
+        } else {
+            try {
+                rr.histogram = regionThreshold(g, options.smooth).histogram;
+            } catch (const std::invalid_argument&) {
+                // One curvature value only: an empty histogram tells the user there is no
+                // valley.
+            }
+        }
 
+        // The levels, and the patches, are independent of each other: each runs on a thread of
+        // its own (most of their work walks the 1-rings one point after another).
+        const int levels = static_cast<int>(rr.thresholds.size());
+        std::vector<SmoothEdgeLevel> edgesAt(rr.thresholds.size());
+        std::vector<int> patchOf;
+        int nextPatch = patches;
+        std::vector<std::exception_ptr> failure(rr.thresholds.size() + 1);
+#pragma omp parallel for schedule(dynamic, 1) if (levels > 0)
+        for (int item = 0; item <= levels; ++item) {
+            try {
+                if (item < levels) {
+                    // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the
+                    // region.
+                    edgesAt[item] = smoothEdgesAtThreshold(g, rr.thresholds[item], options.smooth,
+                                                           {}, analysis.sharp.network.lines);
+                } else {
+                    nextPatch = labelPatches(g, rr.thresholds, patches, patchOf);
+                }
+            } catch (...) {
+                failure[item] = std::current_exception();
+            }
+        }
+        for (const std::exception_ptr& e : failure) {
+            if (e) {
+                std::rethrow_exception(e);
+            }
+        }
+        patches = nextPatch;
         std::vector<PointLabel> firstLabels;
         for (size_t level = 0; level < rr.thresholds.size(); ++level) {
-            // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the region.
-            const SmoothEdgeLevel edges = smoothEdgesAtThreshold(
-                g, rr.thresholds[level], options.smooth, {}, analysis.sharp.network.lines);
+            const SmoothEdgeLevel& edges = edgesAt[level];
             const int offset = static_cast<int>(result.junctions.rows());
             for (const Polyline& line : edges.network.lines) {
                 FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);
@@ -319,8 +352,6 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
                 firstLabels = edges.labels;
             }
         }
-        std::vector<int> patchOf;
-        patches = labelPatches(g, rr.thresholds, patches, patchOf);
         for (size_t i = 0; i < g.members.size(); ++i) {
             const int p = g.members[i];
             region[p] = g.region;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -1078,26 +1079,41 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         d.applied = tau;
         // Sec. 2.4: the outliers leave the histogram, not the patches.
         const double searchHigh = range.first ? d.result.outlierCut : range.high;
-        std::vector<double> below, above;
-        for (double v : all) {
-            if (v > range.patchLow && v <= range.patchHigh) {
-                (v <= tau ? below : above).push_back(v);
+        // The patch search walks the 1-rings one point after another: it runs beside the rest
+        // (each part on its own; their parallel loops then run on one thread each).
+        std::exception_ptr failure;
+#pragma omp parallel sections num_threads(2)
+        {
+#pragma omp section
+            std::tie(d.largestPatch, d.largestPatchBelow) =
+                largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
+#pragma omp section
+            try {
+                std::vector<double> below, above;
+                for (double v : all) {
+                    if (v > range.patchLow && v <= range.patchHigh) {
+                        (v <= tau ? below : above).push_back(v);
+                    }
+                }
+                d.medianBelow = median(std::move(below));
+                d.medianAbove = median(std::move(above));
+                const std::vector<PointLabel> labels =
+                    labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
+                d.innerPoints =
+                    static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
+                d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
+                                           range.patchHigh, a.straddleReach);
+            } catch (...) {
+                failure = std::current_exception();
             }
         }
-        d.medianBelow = median(below);
-        d.medianAbove = median(above);
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
         d.contrast = (d.medianAbove + flat) / (d.medianBelow + flat);
         d.separation = region.curvatureNoise > 0.0
                            ? (d.medianAbove - d.medianBelow) / region.curvatureNoise
                            : infinity;
-        const std::vector<PointLabel> labels =
-            labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
-        d.innerPoints =
-            static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
-        d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
-                                   range.patchHigh, a.straddleReach);
-        std::tie(d.largestPatch, d.largestPatchBelow) =
-            largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
         const bool patch = d.largestPatch >= minInner;
         const bool patchBelow = d.largestPatchBelow >= minInner;
         const bool levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
