@@ -7,10 +7,11 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Shape.hxx>
 
-#include <Inventor/nodes/SoMaterial.h>
-#include <Inventor/nodes/SoMaterialBinding.h>
+#include <algorithm>
+
 #include <Mod/Part/Gui/SoBrepPointSet.h>
 
+#include <Base/Tools.h>
 #include <Gui/BitmapFactory.h>
 #include <Gui/Control.h>
 #include <Gui/MainWindow.h>
@@ -58,6 +59,21 @@ std::vector<App::Color> coloursOf(const FeatureLines::Extraction& e, TopAbs_Shap
     colours.insert(colours.end(), static_cast<size_t>(nSmooth), smooth);
     colours.insert(colours.end(), static_cast<size_t>(nBoundary), boundary);
     return colours;
+}
+
+/// Sets a colour list property, or re-applies it when it holds these colours already: PartGui
+/// rebuilds the Coin nodes of a hidden object when it is shown (a document opened with the
+/// lines hidden, say) without applying the lists again, and the lines would show in LineColor.
+/// Re-applying the same values must not mark the document modified.
+void applyColours(App::PropertyColorList& property, const std::vector<App::Color>& colours)
+{
+    if (colours != property.getValues()) {
+        property.setValues(colours);
+        return;
+    }
+    Base::ObjectStatusLocker<App::Property::Status, App::Property> guard(App::Property::NoModify,
+                                                                         &property);
+    property.touch();
 }
 
 } // namespace
@@ -108,26 +124,20 @@ void ViewProviderExtraction::colourByType()
     const App::Color smooth = SmoothColor.getValue();
     const App::Color boundary = BoundaryColor.getValue();
     const std::vector<App::Color> edges = coloursOf(*e, TopAbs_EDGE, sharp, smooth, boundary);
-    if (!edges.empty() && edges != LineColorArray.getValues()) {
-        LineColorArray.setValues(edges);
+    if (!edges.empty()) {
+        applyColours(LineColorArray, edges);
     }
     // The wires' vertices are drawn as points too, one every resampling step: in the colour of
     // their line they thicken it instead of dotting it. Their point set indexes its materials
     // like its coordinates, from its start index (the edges' nodes come first).
     const std::vector<App::Color> vertices = coloursOf(*e, TopAbs_VERTEX, sharp, smooth, boundary);
     if (!vertices.empty() && nodeset) {
-        const int offset = nodeset->startIndex.getValue();
-        pcPointBind->value = SoMaterialBinding::PER_VERTEX;
-        pcPointMaterial->diffuseColor.setNum(offset + static_cast<int>(vertices.size()));
-        SbColor* colours = pcPointMaterial->diffuseColor.startEditing();
-        for (int i = 0; i < offset; ++i) {
-            colours[i].setValue(smooth.r, smooth.g, smooth.b);
-        }
-        for (size_t i = 0; i < vertices.size(); ++i) {
-            colours[offset + static_cast<int>(i)].setValue(vertices[i].r, vertices[i].g,
-                                                           vertices[i].b);
-        }
-        pcPointMaterial->diffuseColor.finishEditing();
+        // Through PartGui's own property rather than its Coin material, so that the colours
+        // are saved with the view and applyColours re-applies them after a rebuild.
+        const auto offset = static_cast<size_t>(std::max(0, nodeset->startIndex.getValue()));
+        std::vector<App::Color> colours(offset, smooth);
+        colours.insert(colours.end(), vertices.begin(), vertices.end());
+        applyColours(PointColorArray, colours);
     }
 }
 

@@ -28,13 +28,11 @@ def show():
     # patch clouds hidden.
     for obj in doc.Objects:
         obj.ViewObject.Visibility = obj.TypeId == "FeatureLines::Extraction"
-        if obj.TypeId == "FeatureLines::Extraction":
-            obj.ViewObject.LineWidth = 3
     for obj in doc.Objects:
         if obj.TypeId == "FeatureLines::Extraction" and obj.Source:
             obj.Source.ViewObject.Visibility = True
             obj.Source.ViewObject.PointSize = 2
-            obj.Source.ViewObject.ShapeColor = (0.55, 0.55, 0.6)
+            obj.Source.ViewObject.ShapeColor = (0.62, 0.62, 0.68)  # light: the lines stand out
     view = FreeCADGui.getDocument(doc.Name).activeView()
     view.viewIsometric()
     view.fitAll()
