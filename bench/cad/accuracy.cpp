@@ -65,6 +65,8 @@ struct Arguments
     std::string demoCloud;
     double demoPoints = 40000.0;
     bool markdown = false;
+    /// Run the per-point baselines beside the extraction.
+    bool baselines = true;
 };
 
 const char* usage =
@@ -82,7 +84,8 @@ const char* usage =
     "                          of any detector, e.g. the featurelines CLI run on cloud.xyz)\n"
     "  --demo-cloud FILE       write the demo cloud (boss_blend, clean, 6 digits) to FILE\n"
     "  --demo-points N         points of the demo cloud (default 40000)\n"
-    "  --markdown              print tables as Markdown\n";
+    "  --markdown              print tables as Markdown\n"
+    "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n";
 
 double parseNumber(const std::string& text, const std::string& option)
 {
@@ -141,6 +144,8 @@ Arguments parseArguments(int argc, char** argv)
             a.demoPoints = parseNumber(value(), opt);
         } else if (opt == "--markdown") {
             a.markdown = true;
+        } else if (opt == "--no-baselines") {
+            a.baselines = false;
         } else if (opt == "--help" || opt == "-h") {
             std::cout << usage;
             std::exit(0);
@@ -665,10 +670,12 @@ int run(const Arguments& args)
                     }
                 }
             };
-            baseline("pcl-surface-variation", fixedSurfaceVariation, surfaceVariationSweep,
-                     [&] { return surfaceVariation(cloud.points); });
-            baseline("pcl-normal-angle", fixedNormalAngle, normalAngleSweep,
-                     [&] { return normalAngleDegrees(cloud.points); });
+            if (args.baselines) {
+                baseline("pcl-surface-variation", fixedSurfaceVariation, surfaceVariationSweep,
+                         [&] { return surfaceVariation(cloud.points); });
+                baseline("pcl-normal-angle", fixedNormalAngle, normalAngleSweep,
+                         [&] { return normalAngleDegrees(cloud.points); });
+            }
         }
         std::cerr << "done: " << name << "\n";
     }
@@ -736,11 +743,13 @@ int run(const Arguments& args)
         sweepRows.push_back({s.baseline, s.noise, fmt(s.threshold, s.threshold < 1 ? 3 : 0),
                              fmt(meanOf(s.f1[0])), fmt(meanOf(s.f1[1])), fmt(meanOf(s.f1[2]))});
     }
-    if (!args.markdown) {
-        std::cout << "Baseline sweeps: mean F1 over the parts at each threshold\n";
+    if (!sweepRows.empty()) {
+        if (!args.markdown) {
+            std::cout << "Baseline sweeps: mean F1 over the parts at each threshold\n";
+        }
+        printTable({"baseline", "noise", "threshold", "sharp F1", "smooth F1", "boundary F1"},
+                   sweepRows, args.markdown);
     }
-    printTable({"baseline", "noise", "threshold", "sharp F1", "smooth F1", "boundary F1"},
-               sweepRows, args.markdown);
 
     if (!args.demoCloud.empty()) {
         const CadShape part = makeCadShape("boss_blend");
