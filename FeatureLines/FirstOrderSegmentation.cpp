@@ -57,6 +57,10 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         throw std::invalid_argument("first-order segmentation: the point spacing must be a "
                                     "positive number");
     }
+    if (!(options.noiseSpreadFactor >= 0.0)) {
+        throw std::invalid_argument("first-order segmentation: the noise spread factor must not "
+                                    "be negative");
+    }
     if (!(options.minFilletRadius > 0.0)) {
         throw std::invalid_argument("first-order segmentation: the smallest fillet radius must "
                                     "be positive");
@@ -78,7 +82,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         return result;
     }
     result.spread.resize(n);
-    Eigen::VectorXd variation(n);
+    // Surface variation at two scales: over the point and all k neighbours, and over the
+    // point and its nearest `fine` (0: one scale only).
+    const int fine =
+        options.fineNeighbours >= 3 && options.fineNeighbours < k ? options.fineNeighbours : 0;
+    Eigen::VectorXd variation(n), fineVariation(fine > 0 ? n : 0);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
         double lowest = 1.0;
@@ -90,6 +98,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         double squares = 0.0;
         double heights = 0.0;
         double heightSquares = 0.0;
+        auto variationSoFar = [&](int count) {
+            const double trace = squares / count - (sum / count).squaredNorm();
+            const double across = heightSquares / count - std::pow(heights / count, 2);
+            return trace > 0.0 ? std::max(0.0, across) / trace : 0.0;
+        };
         for (int j = 0; j < k; ++j) {
             const int q = N.indices(i, j);
             lowest = std::min(lowest, similarity(i, q));
@@ -99,11 +112,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
             squares += d.squaredNorm();
             heights += h;
             heightSquares += h * h;
+            if (j + 1 == fine) {
+                fineVariation(i) = variationSoFar(fine + 1);
+            }
         }
-        const double count = k + 1;
-        const double trace = squares / count - (sum / count).squaredNorm();
-        const double across = heightSquares / count - std::pow(heights / count, 2);
-        variation(i) = trace > 0.0 ? std::max(0.0, across) / trace : 0.0;
+        variation(i) = variationSoFar(k + 1);
         result.spread(i) = std::acos(std::min(1.0, lowest)) * 180.0 / pi;
     }
 
@@ -117,32 +130,62 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
         return v[v.size() / 2];
     };
-    std::vector<double> sample;
-    for (Eigen::Index i = 0; i < n; i += stride) {
-        sample.push_back(variation(i));
-    }
-    const double floor = median(sample);
-    result.planarityExcess = variation.array() - floor;
-    for (double& v : sample) {
-        v = std::abs(v - floor);
-    }
-    const double noiseDeviation = 1.4826 * median(sample); // the normal law's sigma from its MAD
-
-    // A sphere of radius r sampled over a ball of radius R has surface variation
-    // R^2 / (24 r^2) (heights rho^2 / 2r over the disc), a cylinder R^2 / (32 r^2); R is the
-    // typical distance to the k-th neighbour.
-    std::vector<double> reach;
-    for (Eigen::Index i = 0; i < n; i += stride) {
-        reach.push_back(N.squaredDistances(i, k - 1));
-    }
     const double filletRadius = options.minFilletRadius * spacing;
-    result.minExcess = std::max(median(reach) / (24.0 * filletRadius * filletRadius),
-                                options.noiseMargin * noiseDeviation);
+    // The excess a point needs at one scale: that of a spherical blend of minFilletRadius, or
+    // noiseMargin deviations of the noise, whichever is higher. A sphere of radius r sampled
+    // over a ball of radius R has surface variation R^2 / (24 r^2) (heights rho^2 / 2r over
+    // the disc), a cylinder R^2 / (32 r^2); R is the typical distance to the farthest
+    // neighbour of the scale.
+    auto excessAtScale = [&](const Eigen::VectorXd& values, int neighbours,
+                             Eigen::VectorXd& excess) {
+        std::vector<double> sample;
+        for (Eigen::Index i = 0; i < n; i += stride) {
+            sample.push_back(values(i));
+        }
+        const double floor = median(sample);
+        excess = values.array() - floor;
+        for (double& v : sample) {
+            v = std::abs(v - floor);
+        }
+        const double noiseDeviation = 1.4826 * median(sample); // sigma from the MAD
+        std::vector<double> reach;
+        for (Eigen::Index i = 0; i < n; i += stride) {
+            reach.push_back(N.squaredDistances(i, neighbours - 1));
+        }
+        return std::max(median(reach) / (24.0 * filletRadius * filletRadius),
+                        options.noiseMargin * noiseDeviation);
+    };
+    result.minExcess = excessAtScale(variation, k, result.planarityExcess);
+    result.excessNeighbours = k;
+    // A crease's surface variation does not depend on the scale (a V looks the same at any
+    // size), a blend's grows with R^2 and the noise's falls with it: the scale whose limit is
+    // lower tells creases from blends and noise better. On a clean cloud that is the fine
+    // one (half the blend's variation), on a noisy one the full neighbourhood.
+    if (fine > 0) {
+        Eigen::VectorXd fineExcess;
+        const double fineMin = excessAtScale(fineVariation, fine, fineExcess);
+        if (fineMin < result.minExcess) {
+            result.minExcess = fineMin;
+            result.planarityExcess = std::move(fineExcess);
+            result.excessNeighbours = fine;
+        }
+    }
 
+    // The spread limit follows the cloud's noise: most points lie on smooth patches, so the
+    // median spread is what noise alone gives there, and twice it about the largest. Never
+    // below the join angle (a point whose neighbours all lie within joinAngle of its normal
+    // is inside a surface by the growing's own measure), never above growAngle.
+    std::vector<double> spreads;
+    for (Eigen::Index i = 0; i < n; i += stride) {
+        spreads.push_back(result.spread(i));
+    }
+    result.growAngle =
+        std::clamp(options.noiseSpreadFactor * median(spreads),
+                   std::min(options.joinAngle, options.growAngle), options.growAngle);
     std::vector<char> grows(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         grows[i] =
-            result.spread(i) <= options.growAngle || result.planarityExcess(i) <= result.minExcess
+            result.spread(i) <= result.growAngle || result.planarityExcess(i) <= result.minExcess
                 ? 1
                 : 0;
     }
@@ -170,7 +213,17 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         }
     }
     // A point that cannot grow joins the cluster of the growing neighbour whose normal is
-    // closest to its own (the nearest such neighbour on a tie).
+    // closest to its own (the nearest such neighbour on a tie), unless its neighbours hold
+    // growing points of two clusters that can be surface patches (at least k + 1 growing
+    // points, what a large cluster needs for one interior point): then it lies between two
+    // faces, on a crease too shallow to leave a band wider than a neighbourhood between
+    // them, and stays a candidate. Smaller clusters are splinters noise breaks off a patch.
+    std::vector<int> root(n);
+    std::vector<int> growingInRoot(n, 0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        root[i] = findRoot(parent, static_cast<int>(i));
+        growingInRoot[root[i]] += grows[i];
+    }
     std::vector<int> owner(n, -1);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -178,13 +231,25 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
             continue;
         }
         double best = cosJoin;
+        int firstFace = -1;
+        bool betweenFaces = false;
         for (int j = 0; j < k; ++j) {
             const int q = N.indices(i, j);
+            if (!grows[q]) {
+                continue;
+            }
+            if (growingInRoot[root[q]] > k) {
+                betweenFaces = betweenFaces || (firstFace >= 0 && root[q] != firstFace);
+                firstFace = root[q];
+            }
             const double s = similarity(i, q);
-            if (grows[q] && (s > best || (s == best && owner[i] < 0))) {
+            if (s > best || (s == best && owner[i] < 0)) {
                 best = s;
                 owner[i] = q;
             }
+        }
+        if (betweenFaces) {
+            owner[i] = -1;
         }
     }
 
@@ -196,13 +261,13 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         const int anchor = grows[i]        ? static_cast<int>(i)
                            : owner[i] >= 0 ? owner[i]
                                            : static_cast<int>(i);
-        const int root = findRoot(parent, anchor);
-        if (idOfRoot[root] < 0) {
-            idOfRoot[root] = static_cast<int>(result.clusterSize.size());
+        const int r = root[anchor];
+        if (idOfRoot[r] < 0) {
+            idOfRoot[r] = static_cast<int>(result.clusterSize.size());
             result.clusterSize.push_back(0);
         }
-        result.cluster[i] = idOfRoot[root];
-        ++result.clusterSize[idOfRoot[root]];
+        result.cluster[i] = idOfRoot[r];
+        ++result.clusterSize[idOfRoot[r]];
     }
 
     // Small clusters: fewer than minInteriorPoints points whose whole neighbourhood is inside.

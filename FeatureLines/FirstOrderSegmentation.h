@@ -24,10 +24,21 @@ namespace featurelines {
 struct FirstOrderSegmentationOptions
 {
     /// Degrees. A point may stop the growing only when the normals of its k neighbours
-    /// spread more than this around its own (largest angle). Measured with k = 16: noise of
-    /// 0.3 spacing along the normal gives spreads of 10 degrees, up to 17; a 45 degree crease
-    /// 25-30, a 90 degree crease 50-65; a fillet of radius 8 spacings 16, of 6 spacings 23.
+    /// spread more than the spread limit around its own (largest angle); this is the limit's
+    /// upper bound. Measured with k = 16: noise of 0.3 spacing along the normal gives spreads
+    /// of 9-10 degrees (median), up to 17; a 45 degree crease 25-30 at its centre, a 35
+    /// degree crease about 20, a 90 degree crease 50-65; a fillet of radius 8 spacings 16, of
+    /// 6 spacings 23 (fillets are told from creases by the planarity excess below, not by
+    /// the spread).
     double growAngle = 20.0;
+    /// The spread limit follows the noise: this many times the cloud's median spread (what
+    /// noise gives on the smooth patches that hold most points), clamped to
+    /// [joinAngle, growAngle]. Noise of 0.3 spacing reaches about twice its median spread
+    /// (17 against 9 degrees), so 2 keeps noisy planes growing and gives 20 there; a clean
+    /// cloud of planes gets joinAngle, so creases of 35 degrees, whose centre spreads about
+    /// 20, stop the growing there too (the benchmark's chamfered box: sharp recall 0.944 ->
+    /// 0.957 clean). A large factor keeps growAngle whatever the noise.
+    double noiseSpreadFactor = 2.0;
     /// Degrees. A neighbour joins the cluster of a growing point when their normals differ by
     /// less than this. Half the spread limit: the points on a crease, whose normals lie half
     /// way between those of the two faces, join neither face.
@@ -36,11 +47,11 @@ struct FirstOrderSegmentationOptions
     /// cloud's median as the noise floor, exceeds that of a spherical blend of this radius,
     /// R^2 / (24 r^2) (a cylindrical fillet gives R^2 / (32 r^2), less). Fillets and corner
     /// blends of this radius or more stay smooth (at 5 spacings they partly turn sharp); a
-    /// clean crease reaches 0.14 tan^2(a/2) at its centre, so creases turning the normal by
-    /// more than ~35 degrees stop the growing (the 45 degree edges of a chamfer; the 35 degree
-    /// edges where three chamfers meet only in part). 6 is the smallest fillet the tests and
-    /// the benchmark ask to keep smooth; at 5 the benchmark's chamfered box keeps a sharp
-    /// recall of 0.83 instead of 0.95.
+    /// clean crease reaches 0.14 tan^2(a/2) at its centre whatever R, so at the fine scale
+    /// (fineNeighbours) creases turning the normal by 35 degrees or more stop the growing on
+    /// a clean cloud (the 45 and 35 degree edges of a chamfered box); at 30 degrees the points
+    /// beside the crease still grow across it. 6 is the smallest fillet the tests and the
+    /// benchmark ask to keep smooth.
     double minFilletRadius = 6.0;
     /// ... and exceeds this many standard deviations of the noise on the surface variation
     /// (estimated from the cloud's median absolute deviation). On a clean cloud this is
@@ -49,6 +60,15 @@ struct FirstOrderSegmentationOptions
     /// At 2, noisy 45 degree edges are mostly lost; below 1, noisy fillets of 7 spacings start
     /// to leave candidate chains.
     double noiseMargin = 1.0;
+    /// The planarity excess is measured over the point and all k neighbours, and over the
+    /// point and its nearest fineNeighbours; the scale whose limit (minFilletRadius,
+    /// noiseMargin) is lower is used. A crease's excess is the same at both scales, a
+    /// blend's halves at the finer one and the noise's doubles: the fine scale wins on clean
+    /// clouds, where creases of 35 degrees then stand clear of blends of minFilletRadius
+    /// (the benchmark's clean chamfered box: sharp recall 0.957 -> 0.996 with the two-sided
+    /// rule of segmentByNormals), the full one on noisy clouds. 0: the full neighbourhood
+    /// only.
+    int fineNeighbours = 8;
     /// A cluster is large (a surface patch) when at least this many of its points have all
     /// their k neighbours inside it; otherwise it is small and its points are candidates.
     /// Counting whole neighbourhoods rather than points is the design's reading of "small":
@@ -75,6 +95,11 @@ struct FirstOrderSegmentation
     Eigen::VectorXd planarityExcess;
     /// The excess above which a point may stop the growing (minFilletRadius, noiseMargin).
     double minExcess = 0.0;
+    /// The neighbours (nearest first) the planarity excess was measured over (k or
+    /// fineNeighbours).
+    int excessNeighbours = 0;
+    /// Degrees: the spread limit used (growAngle, noiseSpreadFactor).
+    double growAngle = 0.0;
 
     int clusterCount() const { return static_cast<int>(clusterSize.size()); }
     bool isCandidate(Eigen::Index i) const { return smallCluster[cluster[i]] != 0; }
@@ -86,8 +111,12 @@ struct FirstOrderSegmentation
 ///   N        the k nearest neighbours the normals were estimated on
 ///   spacing  the cloud's mean point spacing (meanSpacing())
 /// A point grows its cluster unless both its normal spread and its planarity excess are
-/// high; every point ends in exactly one cluster, and the result does not depend on the
-/// point order beyond cluster numbering. Throws std::invalid_argument when the sizes
+/// high. A point that does not grow joins the cluster of its growing neighbour of closest
+/// normal (within joinAngle), unless its growing neighbours belong to two clusters of at
+/// least k + 1 growing points (two faces, as large clusters need an interior point): then
+/// it lies on a crease too shallow to leave a band of candidates wider than a neighbourhood
+/// and stays a candidate. Every point ends in exactly one cluster, and the result does not
+/// depend on the point order beyond cluster numbering. Throws std::invalid_argument when the sizes
 /// disagree, a normal is not finite, the spacing is not positive or an angle is not in
 /// (0, 90].
 FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix& normals,

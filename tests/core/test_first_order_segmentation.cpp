@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // First-order segmentation on shapes whose answer is known: a plane and a fillet-rounded cube
-// are one smooth patch each; a cube is six faces with candidates only along its edges.
+// are one smooth patch each; a cube is six faces with candidates only along its edges; a
+// ridge of 35 degrees separates its two faces; the spread limit and the scale of the excess
+// follow the noise.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "FeatureLines/FirstOrderSegmentation.h"
@@ -133,6 +136,64 @@ TEST(FirstOrderSegmentation, FilletsOfSixSpacingsKeepTheRoundedCubeOnePatch)
     EXPECT_LT(candidates, rounded.size() / 100) << "at most stray points, no band";
 }
 
+TEST(FirstOrderSegmentation, SpreadLimitAndScaleFollowTheNoise)
+{
+    // A clean plane spreads nothing: the limit is the join angle and the excess is measured at
+    // the fine scale (a blend's excess halves there, a crease's stays). Noise of 0.3 spacing
+    // raises the limit to about twice its median spread and the excess moves to the full
+    // neighbourhood, where the noise's own excess is lower.
+    const FirstOrderSegmentationOptions defaults;
+    for (double sigma : {0.0, 0.3}) {
+        shapes::Sample plane = shapes::plane(40.0, 1.0, 8);
+        shapes::addNormalNoise(plane, sigma, 9);
+        const Prepared p = prepare(plane);
+        const FirstOrderSegmentation seg = segment(plane, p);
+        SCOPED_TRACE("noise sigma " + std::to_string(sigma));
+        if (sigma == 0.0) {
+            EXPECT_DOUBLE_EQ(seg.growAngle, defaults.joinAngle);
+            EXPECT_EQ(seg.excessNeighbours, defaults.fineNeighbours);
+        } else {
+            EXPECT_GT(seg.growAngle, defaults.joinAngle + 2.0);
+            EXPECT_LE(seg.growAngle, defaults.growAngle);
+            EXPECT_EQ(seg.excessNeighbours, p.neighbours.k());
+        }
+    }
+}
+
+TEST(FirstOrderSegmentation, RidgeOfThirtyFiveDegreesSeparatesItsFaces)
+{
+    // A house-shaped prism whose ridge turns the normal by 35 degrees: on a clean cloud the
+    // two roof faces are separate clusters and the points on the ridge, between them, are
+    // candidates (not joined to either face).
+    const double w = 15.0, pi = 3.14159265358979323846;
+    const double rise = w * std::tan(17.5 * pi / 180.0);
+    const shapes::Sample house = shapes::prism(
+        {{-w, -15.0}, {w, -15.0}, {w, 10.0}, {0.0, 10.0 + rise}, {-w, 10.0}}, 40.0, 1.0, 2);
+    const Prepared p = prepare(house);
+    const FirstOrderSegmentation seg = segment(house, p);
+    EXPECT_EQ(largeClusters(seg), 7) << "five sides and two caps";
+    int onRidge = 0, candidates = 0;
+    std::set<int> roofClusters;
+    for (Eigen::Index i = 0; i < house.size(); ++i) {
+        const Eigen::RowVector3d x = house.points.row(i);
+        if (std::abs(x.z()) > 15.0) {
+            continue; // away from the caps
+        }
+        if (std::hypot(x.x(), x.y() - 10.0 - rise) < 0.5 * p.spacing) {
+            ++onRidge;
+            candidates += seg.isCandidate(i) ? 1 : 0;
+        }
+        // Roof points away from the ridge and the eaves.
+        if ((house.part[i] == 2 || house.part[i] == 3) && std::abs(x.x()) > 5.0 &&
+            std::abs(x.x()) < 10.0) {
+            roofClusters.insert(seg.cluster[i]);
+        }
+    }
+    ASSERT_GT(onRidge, 10);
+    EXPECT_GE(candidates, 0.9 * onRidge);
+    EXPECT_EQ(roofClusters.size(), 2u);
+}
+
 TEST(FirstOrderSegmentation, SameInputSameClusters)
 {
     const shapes::Sample cube = shapes::cube(20.0, 1.0, 7);
@@ -160,5 +221,10 @@ TEST(FirstOrderSegmentation, BadInputThrows)
     zeroAngle.growAngle = 0.0;
     EXPECT_THROW(
         segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, zeroAngle),
+        std::invalid_argument);
+    FirstOrderSegmentationOptions negative;
+    negative.noiseSpreadFactor = -1.0;
+    EXPECT_THROW(
+        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, negative),
         std::invalid_argument);
 }

@@ -105,6 +105,75 @@ public:
         }
     }
 
+    /// Jittered grid of cell centres over the face of the convex polyhedron {x : n_j . x <=
+    /// d_j} that lies in plane `face`: laid in the plane over the face's bounding rectangle,
+    /// samples outside the polyhedron dropped.
+    void convexFace(const std::vector<Eigen::Vector4d>& planes, std::size_t face, double spacing,
+                    int part)
+    {
+        const Eigen::Vector3d n = planes[face].head<3>().normalized();
+        const double d = planes[face][3] / planes[face].head<3>().norm();
+        const Eigen::Vector3d u = n.unitOrthogonal();
+        const Eigen::Vector3d v = n.cross(u);
+        // The face polygon: a square larger than the polyhedron, clipped by every other plane
+        // (Sutherland-Hodgman), in the plane's (u, v) coordinates.
+        double extent = spacing;
+        for (const Eigen::Vector4d& p : planes) {
+            extent += std::abs(p[3] / p.head<3>().norm());
+        }
+        extent *= 4.0;
+        std::vector<Eigen::Vector2d> polygon = {
+            {-extent, -extent}, {extent, -extent}, {extent, extent}, {-extent, extent}};
+        const Eigen::Vector3d origin = d * n;
+        auto at = [&](const Eigen::Vector2d& q) {
+            return Eigen::Vector3d(origin + q.x() * u + q.y() * v);
+        };
+        for (std::size_t j = 0; j < planes.size() && !polygon.empty(); ++j) {
+            if (j == face) {
+                continue;
+            }
+            const Eigen::Vector3d nj = planes[j].head<3>();
+            auto inside = [&](const Eigen::Vector2d& q) { return planes[j][3] - nj.dot(at(q)); };
+            std::vector<Eigen::Vector2d> clipped;
+            for (std::size_t i = 0; i < polygon.size(); ++i) {
+                const Eigen::Vector2d& a = polygon[i];
+                const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+                const double fa = inside(a), fb = inside(b);
+                if (fa >= 0.0) {
+                    clipped.push_back(a);
+                }
+                if ((fa >= 0.0) != (fb >= 0.0)) {
+                    clipped.push_back(a + fa / (fa - fb) * (b - a));
+                }
+            }
+            polygon = std::move(clipped);
+        }
+        if (polygon.size() < 3) {
+            return;
+        }
+        Eigen::Vector2d low = polygon[0], high = polygon[0];
+        for (const Eigen::Vector2d& q : polygon) {
+            low = low.cwiseMin(q);
+            high = high.cwiseMax(q);
+        }
+        const int nu = cells(high.x() - low.x(), spacing);
+        const int nv = cells(high.y() - low.y(), spacing);
+        for (int i = 0; i < nu; ++i) {
+            for (int j = 0; j < nv; ++j) {
+                const Eigen::Vector2d q(low.x() + cellPosition(i, nu) * (high.x() - low.x()),
+                                        low.y() + cellPosition(j, nv) * (high.y() - low.y()));
+                const Eigen::Vector3d x = at(q);
+                bool inside = true;
+                for (std::size_t k = 0; k < planes.size() && inside; ++k) {
+                    inside = k == face || planes[k].head<3>().dot(x) <= planes[k][3];
+                }
+                if (inside) {
+                    add(x, n, 0.0, part);
+                }
+            }
+        }
+    }
+
     Sample finish()
     {
         Sample s;
@@ -229,6 +298,81 @@ Sample roundedCube(double edge, double radius, double spacing, unsigned seed)
                      pi / 2, spacing, 2);
     }
     return b.finish();
+}
+
+Sample convexPolyhedron(const std::vector<Eigen::Vector4d>& planes, double spacing, unsigned seed)
+{
+    requirePositive(spacing, "spacing");
+    for (const Eigen::Vector4d& p : planes) {
+        if (!p.allFinite() || !(p.head<3>().norm() > 0.0)) {
+            throw std::invalid_argument("shape sampler: a plane needs a finite, nonzero normal");
+        }
+    }
+    Builder b(seed);
+    for (std::size_t face = 0; face < planes.size(); ++face) {
+        b.convexFace(planes, face, spacing, static_cast<int>(face));
+    }
+    return b.finish();
+}
+
+Sample chamferedCube(double edge, double chamfer, double spacing, unsigned seed)
+{
+    requirePositive(edge, "edge");
+    requirePositive(chamfer, "chamfer");
+    if (!(chamfer < edge / 2)) {
+        throw std::invalid_argument("shape sampler: the chamfer must be below half the cube's "
+                                    "edge");
+    }
+    const double h = edge / 2;
+    std::vector<Eigen::Vector4d> planes;
+    for (int a = 0; a < 3; ++a) {
+        for (double sign : {1.0, -1.0}) {
+            planes.emplace_back(sign * (a == 0), sign * (a == 1), sign * (a == 2), h);
+        }
+    }
+    // The chamfer of the edge where faces a and b meet cuts both back by `chamfer`:
+    // x_a + x_b <= 2 h - chamfer (signs per edge), normal at 45 degrees to either face.
+    const double r = 1.0 / std::sqrt(2.0);
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3;
+        for (double sa : {1.0, -1.0}) {
+            for (double sb : {1.0, -1.0}) {
+                Eigen::Vector4d p = Eigen::Vector4d::Zero();
+                p[a] = sa * r;
+                p[b] = sb * r;
+                p[3] = (2 * h - chamfer) * r;
+                planes.push_back(p);
+            }
+        }
+    }
+    // The corner triangle through the three chamfers' ends: x + y + z <= 3 h - 2 chamfer.
+    const double c = 1.0 / std::sqrt(3.0);
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d s(corner & 1 ? -1.0 : 1.0, corner & 2 ? -1.0 : 1.0,
+                                corner & 4 ? -1.0 : 1.0);
+        planes.emplace_back(s.x() * c, s.y() * c, s.z() * c, (3 * h - 2 * chamfer) * c);
+    }
+    return convexPolyhedron(planes, spacing, seed);
+}
+
+Sample prism(const std::vector<Eigen::Vector2d>& section, double height, double spacing,
+             unsigned seed)
+{
+    requirePositive(height, "height");
+    if (section.size() < 3) {
+        throw std::invalid_argument("shape sampler: a prism's section needs three vertices");
+    }
+    std::vector<Eigen::Vector4d> planes;
+    const std::size_t m = section.size();
+    for (std::size_t k = 0; k < m; ++k) {
+        const Eigen::Vector2d a = section[k], b = section[(k + 1) % m];
+        // Counter-clockwise: the outward normal is the edge turned clockwise.
+        const Eigen::Vector2d n = Eigen::Vector2d(b.y() - a.y(), a.x() - b.x()).normalized();
+        planes.emplace_back(n.x(), n.y(), 0.0, n.dot(a));
+    }
+    planes.emplace_back(0.0, 0.0, 1.0, height / 2);
+    planes.emplace_back(0.0, 0.0, -1.0, height / 2);
+    return convexPolyhedron(planes, spacing, seed);
 }
 
 void addNormalNoise(Sample& s, double sigma, unsigned seed)

@@ -52,6 +52,26 @@ Sample cube(double edge, double spacing, unsigned seed);
 /// (|H| = 0), 1 cylindrical fillet (|H| = 1/(2 radius)), 2 spherical corner (|H| = 1/radius).
 Sample roundedCube(double edge, double radius, double spacing, unsigned seed);
 
+/// Surface of the convex polyhedron {x : n . x <= d for every plane (n, d)} (rows n_x, n_y,
+/// n_z, d; n need not be unit): each plane that bounds it gives one face, sampled on a jittered
+/// grid laid in its plane; |H| = 0, part is the plane's index. A plane that does not touch the
+/// polyhedron gives no sample. Not centred: the planes place it.
+Sample convexPolyhedron(const std::vector<Eigen::Vector4d>& planes, double spacing, unsigned seed);
+
+/// The cube [-edge/2, edge/2]^3 with all twelve edges chamfered, each face cut back by
+/// `chamfer` (0 < chamfer < edge/2), and every corner cut by the triangle through the ends of
+/// its three chamfers (what an equal-distance chamfer of all edges gives in a CAD system).
+/// Sharp edges only: 24 of 45 degrees between faces and chamfers, 24 of 35.26 degrees between
+/// chamfers and corner triangles. part: 0-5 faces (+x, -x, +y, -y, +z, -z), 6-17 chamfers,
+/// 18-25 corners.
+Sample chamferedCube(double edge, double chamfer, double spacing, unsigned seed);
+
+/// Right prism over the convex polygon `section` (vertices counter-clockwise in the xy plane),
+/// z in [-height/2, height/2]. part k is the side from vertex k to k + 1; then the top (+z) and
+/// bottom caps.
+Sample prism(const std::vector<Eigen::Vector2d>& section, double height, double spacing,
+             unsigned seed);
+
 /// Moves every point along its true normal by a Gaussian offset of standard deviation sigma
 /// (scanner noise across the surface). Normals and curvature stay the true ones.
 void addNormalNoise(Sample& s, double sigma, unsigned seed);
