@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <queue>
 #include <stdexcept>
@@ -332,10 +333,56 @@ bool raysMeet(const Eigen::Vector3d& a, const Eigen::Vector3d& da, const Eigen::
     return true;
 }
 
+/// Where a line may run: along candidates, or where the caller marks points as supporting.
+class Support
+{
+public:
+    template <class Supports>
+    Support(const PointMatrix& P, Supports supports, double radius) : radius_(radius)
+    {
+        for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            if (supports(i)) {
+                points_.emplace_back(P.row(i).transpose());
+            }
+        }
+        grid_ = std::make_unique<NodeGrid>(points_, radius);
+    }
+
+    /// Share of the steps (one spacing apart) along the segment from a to b that have a
+    /// supporting point within the radius.
+    double along(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double spacing) const
+    {
+        const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
+        int supported = 0;
+        for (int s = 0; s <= steps; ++s) {
+            bool found = false;
+            grid_->forEachWithin(a + (b - a) * (static_cast<double>(s) / steps), radius_,
+                                 [&](int) { found = true; });
+            supported += found ? 1 : 0;
+        }
+        return supported / static_cast<double>(steps + 1);
+    }
+
+private:
+    double radius_;
+    std::vector<Eigen::Vector3d> points_;
+    std::unique_ptr<NodeGrid> grid_;
+};
+
+/// A new edge from a to b is acceptable: short (within half maxEdgeLength, the reach of the
+/// spanning tree's own edges), or running along supporting points, or no support given.
+bool supported(const Support* support, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+               const ClusterGraphOptions& options, double spacing)
+{
+    return !support || (b - a).norm() <= 0.5 * options.maxEdgeLength * spacing ||
+           support->along(a, b, spacing) >= options.minExtendSupport;
+}
+
 /// Reconnection: every free end is joined to the nearest node ahead of it, so that lines
 /// close (the spanning tree broke every cycle of the feature network once) or end on
 /// another line.
-int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels)
+int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels,
+                  const Support* support)
 {
     const double spacing = g.spacing();
     const double radius = options.reconnectRadius * spacing;
@@ -385,6 +432,9 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>
             if (found != along.end() && found->second < options.minCycleRatio * distance) {
                 return;
             }
+            if (!supported(support, tip, g.centre(target), options, spacing)) {
+                return;
+            }
             best = target;
             bestDistance = distance;
         });
@@ -409,7 +459,9 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>
         if (g.degree(p.target) == 1 && endDirection(g, p.leaf, directionLength, from) &&
             endDirection(g, p.target, directionLength, to) &&
             raysMeet(g.centre(p.leaf), from, g.centre(p.target), to, radius,
-                     0.5 * options.maxEdgeLength * spacing, corner, along)) {
+                     0.5 * options.maxEdgeLength * spacing, corner, along) &&
+            supported(support, g.centre(p.leaf), corner, options, spacing) &&
+            supported(support, corner, g.centre(p.target), options, spacing)) {
             const int node = g.addNode(corner);
             labels.push_back(labels[p.leaf]);
             g.addEdge(p.leaf, node);
@@ -425,7 +477,7 @@ int reconnectEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>
 /// Free ends left after the reconnection that face each other across a longer gap (where
 /// noise thinned the candidates of a shallow crease) are joined, end to end: each must lie
 /// ahead of the other, so a line is only ever continued in its own direction.
-int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
+int joinFacingEnds(Graph& g, const ClusterGraphOptions& options, const Support* support)
 {
     const double spacing = g.spacing();
     const double radius = options.facingEndsRadius * spacing;
@@ -472,6 +524,9 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
         if (along.count(v)) {
             continue; // the two ends of one short piece
         }
+        if (!supported(support, g.centre(u), g.centre(v), options, spacing)) {
+            continue;
+        }
         g.addEdge(u, v);
         ++added;
     }
@@ -482,7 +537,8 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options)
 /// reconnectRadius are joined through a new node where they meet: the corner of two creases whose
 /// last few spacings (and the faint edges between them, as at the triangles of a chamfered box's
 /// corners) left no candidates. Further free ends heading for that node join it too.
-int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels)
+int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector<int>& labels,
+                       const Support* support)
 {
     const double spacing = g.spacing();
     const double reach = 2.0 * options.reconnectRadius * spacing;
@@ -504,7 +560,9 @@ int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector
         }
     }
     auto meet = [&](const End& a, const End& b, Eigen::Vector3d& where, double& along) {
-        return raysMeet(a.tip, a.direction, b.tip, b.direction, reach, tolerance, where, along);
+        return raysMeet(a.tip, a.direction, b.tip, b.direction, reach, tolerance, where, along) &&
+               supported(support, a.tip, where, options, spacing) &&
+               supported(support, where, b.tip, options, spacing);
     };
     std::vector<std::tuple<double, int, int>> pairs;
     for (int a = 0; a < static_cast<int>(ends.size()); ++a) {
@@ -538,13 +596,176 @@ int joinConvergingEnds(Graph& g, const ClusterGraphOptions& options, std::vector
             }
             const Eigen::Vector3d step = where - c.tip;
             const double t = step.dot(c.direction);
-            if (t >= 0.0 && t <= reach && (step - t * c.direction).norm() <= tolerance) {
+            if (t >= 0.0 && t <= reach && (step - t * c.direction).norm() <= tolerance &&
+                supported(support, c.tip, where, options, spacing)) {
                 g.addEdge(c.node, corner);
                 ++added;
             }
         }
     }
     return added;
+}
+
+/// Free ends still left are extended straight ahead to the line they point at: along the
+/// line's direction at the end, the first node of another line (or of a far part of the same
+/// line) lying within a narrow cone around that direction, up to extendReach, whose way there
+/// runs along supporting points (when the caller marks them). A crease whose stretch left too
+/// few candidates still runs on straight to the corner where it meets the other edges, and
+/// its normals still bend all the way (Sec. 1.2 of the 2008 paper: the lines close on each
+/// other).
+int extendFreeEnds(Graph& g, const ClusterGraphOptions& options, const Support* support)
+{
+    const double spacing = g.spacing();
+    const double reach = options.extendReach * spacing;
+    if (!(reach > 0.0)) {
+        return 0;
+    }
+    const double slope = std::tan(options.extendAngle * pi / 180.0);
+    const double base = 0.5 * options.maxEdgeLength * spacing;
+    const double directionLength = std::max(options.minBranchLength, 1.0) * spacing;
+    NodeGrid grid(g.centres(), reach);
+    struct Proposal
+    {
+        double along;
+        int leaf;
+        int target;
+    };
+    std::vector<Proposal> proposals;
+    for (int leaf = 0; leaf < g.size(); ++leaf) {
+        if (g.degree(leaf) != 1) {
+            continue;
+        }
+        const Eigen::Vector3d tip = g.centre(leaf);
+        const auto own = g.distancesFrom(leaf, options.minCycleRatio * reach);
+        // The direction over the spur length, then over half of it: an end a few spacings
+        // past a corner of its line points along its last stretch only over the shorter one.
+        for (const double length :
+             {directionLength, 0.5 * directionLength, 0.25 * directionLength}) {
+            Eigen::Vector3d direction;
+            if (!endDirection(g, leaf, length, direction)) {
+                continue;
+            }
+            std::vector<std::tuple<double, double, int>> ahead; // along + aside, aside, target
+            grid.forEachWithin(tip, reach, [&](int target) {
+                if (target == leaf || g.degree(target) == 0) {
+                    return;
+                }
+                const Eigen::Vector3d step = g.centre(target) - tip;
+                const double distance = step.norm();
+                double along = step.dot(direction);
+                const double aside = (step - along * direction).norm();
+                // Ahead within the cone, or touching the end whatever the direction (an end
+                // that stops beside another line is on it).
+                if (distance <= base) {
+                    along = std::max(along, 0.0);
+                } else if (!(along > 0.0) || aside > base + along * slope) {
+                    return;
+                }
+                // Not back onto the end's own line a little behind it.
+                const auto found = own.find(target);
+                if (found != own.end() && found->second < options.minCycleRatio * distance) {
+                    return;
+                }
+                // Where the way ahead meets a line: the node of the first line met that lies
+                // nearest to the way (a node beside it lies as much farther).
+                ahead.emplace_back(along + aside, aside, target);
+            });
+            std::sort(ahead.begin(), ahead.end());
+            // The first node met whose way is supported; a few tries, as the nodes of one
+            // line come one after another.
+            const std::size_t tries = std::min<std::size_t>(ahead.size(), 8);
+            int chosen = -1;
+            double chosenAlong = 0.0;
+            for (std::size_t t = 0; t < tries && chosen < 0; ++t) {
+                const auto [along, aside, target] = ahead[t];
+                if (!supported(support, tip, g.centre(target), options, spacing)) {
+                    continue;
+                }
+                chosen = target;
+                chosenAlong = along;
+            }
+            if (chosen >= 0) {
+                proposals.push_back({chosenAlong, leaf, chosen});
+                break;
+            }
+        }
+        if (!proposals.empty() && proposals.back().leaf == leaf) {
+            continue;
+        }
+        // Nothing ahead: where the line's last stretch is too short or too bent to tell its
+        // way (an end a few spacings before a corner whose other edges left no candidates), the
+        // nearest node within reconnectRadius in any direction, if the way there is
+        // supported. Without supporting points this is not tried.
+        if (!support) {
+            continue;
+        }
+        const double near = 2.0 * options.reconnectRadius * spacing;
+        std::vector<std::pair<double, int>> around;
+        grid.forEachWithin(tip, std::min(near, reach), [&](int target) {
+            const double distance = (g.centre(target) - tip).norm();
+            const auto found = own.find(target);
+            if (target != leaf && g.degree(target) > 0 &&
+                (found == own.end() || found->second >= options.minCycleRatio * distance)) {
+                around.emplace_back(distance, target);
+            }
+        });
+        std::sort(around.begin(), around.end());
+        for (std::size_t t = 0; t < std::min<std::size_t>(around.size(), 8); ++t) {
+            if (supported(support, tip, g.centre(around[t].second), options, spacing)) {
+                proposals.push_back({around[t].first, leaf, around[t].second});
+                break;
+            }
+        }
+    }
+    std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) {
+        return std::tie(a.along, a.leaf, a.target) < std::tie(b.along, b.leaf, b.target);
+    });
+    int added = 0;
+    for (const Proposal& p : proposals) {
+        // An earlier extension may have reached this end already.
+        if (g.degree(p.leaf) != 1 || g.degree(p.target) == 0 || g.hasEdge(p.leaf, p.target)) {
+            continue;
+        }
+        g.addEdge(p.leaf, p.target);
+        ++added;
+    }
+    return added;
+}
+
+/// The free ends no join reached are removed with their branch, up to the first junction
+/// (an open piece ending in nothing on both sides goes whole), when the branch or piece is no
+/// longer than maxLength: what cannot close is not a boundary of a patch. Repeated, because
+/// cutting a fork can leave the line it ended as a new free end.
+int removeFreeEnds(Graph& g, double maxLength)
+{
+    int removed = 0;
+    for (bool changed = true; changed;) {
+        changed = false;
+        std::vector<std::pair<std::vector<int>, double>> branches;
+        for (int v = 0; v < g.size(); ++v) {
+            if (g.degree(v) == 1) {
+                branches.push_back(g.chainFrom(v, g.neighbours(v)[0]));
+            }
+        }
+        for (const auto& [chain, length] : branches) {
+            const int end = chain.back();
+            if (g.degree(chain.front()) != 1 || length > maxLength) {
+                continue; // removed with an open piece from its other end, or long
+            }
+            if (g.degree(end) == 2) {
+                continue; // a junction an earlier cut of this round left with two lines
+            }
+            for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+                g.isolate(chain[i]);
+            }
+            if (g.degree(end) == 1) {
+                g.isolate(end); // the other end of an open piece
+            }
+            ++removed;
+            changed = true;
+        }
+    }
+    return removed;
 }
 
 /// Bubbles: where a band is two nodes wide, the tree may run two parallel chains that the
@@ -756,7 +977,8 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
                                const std::vector<int>& cluster,
                                const std::vector<char>& candidateCluster, double spacing,
                                const ClusterGraphOptions& options,
-                               const std::vector<int>& clusterLabel)
+                               const std::vector<int>& clusterLabel,
+                               const std::vector<char>& supportingPoint)
 {
     const Eigen::Index n = P.rows();
     if (N.size() != n || static_cast<Eigen::Index>(cluster.size()) != n) {
@@ -769,6 +991,10 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         throw std::invalid_argument("cluster graph: the point spacing must be a positive number");
     }
     const int clusterCount = static_cast<int>(candidateCluster.size());
+    if (!supportingPoint.empty() && static_cast<Eigen::Index>(supportingPoint.size()) != n) {
+        throw std::invalid_argument("cluster graph: the supporting-point flags must have one "
+                                    "entry per point");
+    }
     if (!clusterLabel.empty() && static_cast<int>(clusterLabel.size()) != clusterCount) {
         throw std::invalid_argument("cluster graph: one label per cluster is needed (" +
                                     std::to_string(clusterLabel.size()) + " labels for " +
@@ -933,12 +1159,18 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
     // G_pruned_branches, reconnection, and the spurs a reconnection can leave (an end joined
     // to the node beside the other end of a broken cycle leaves that end as a short tip).
     const double minBranch = options.minBranchLength * spacing;
+    std::unique_ptr<Support> support;
+    if (!supportingPoint.empty()) {
+        support = std::make_unique<Support>(
+            P, [&](Eigen::Index i) { return supportingPoint[i] != 0 || isCandidate(i); },
+            options.supportRadius * spacing);
+    }
     result.counts.prunedBranches = pruneShortBranches(graph, minBranch);
     if (options.reconnectRadius > 0.0) {
-        result.counts.reconnections = reconnectEnds(graph, options, nodeLabel);
+        result.counts.reconnections = reconnectEnds(graph, options, nodeLabel, support.get());
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
-        result.counts.reconnections += joinFacingEnds(graph, options);
-        result.counts.reconnections += joinConvergingEnds(graph, options, nodeLabel);
+        result.counts.reconnections += joinFacingEnds(graph, options, support.get());
+        result.counts.reconnections += joinConvergingEnds(graph, options, nodeLabel, support.get());
         // A join at a corner can leave the tip of a third line there as a spur.
         result.counts.prunedBranches += pruneShortBranches(graph, minBranch);
     }
@@ -947,6 +1179,12 @@ ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
         mergeCloseJunctions(graph, options.junctionMergeLength * spacing);
     result.counts.droppedComponents = dropShortComponents(
         graph, options.minComponentLength * spacing, options.minOpenComponentLength * spacing);
+    if (options.extendReach > 0.0) {
+        result.counts.extensions = extendFreeEnds(graph, options, support.get());
+    }
+    if (options.maxFreeEndLength > 0.0) {
+        result.counts.removedFreeEnds = removeFreeEnds(graph, options.maxFreeEndLength * spacing);
+    }
 
     // The joins of converging ends may have added nodes.
     const int finalCount = graph.size();

@@ -14,9 +14,12 @@
 // candidate clusters gathered into nodes; G_all (nodes adjacent through the k nearest
 // neighbours); G_extended (plus nodes within extendedRadius); its minimum spanning forest
 // with overlong edges cut (G_pruned_mst); short branches cut (G_pruned_branches); free ends
-// reconnected to the nearest node ahead, then facing free ends joined across longer gaps;
-// bubbles (parallel chains) removed; close junctions merged; short pieces dropped; lines
-// read off as chains between nodes of degree other than 2, and cycles.
+// reconnected to the nearest node ahead, then facing free ends joined across longer gaps and
+// ends heading for one corner joined there; bubbles (parallel chains) removed; close
+// junctions merged; short pieces dropped; free ends still left extended straight ahead to
+// the line they point at, and what still ends in nothing removed up to a length (both off by
+// default, on in the sharp stage: sharpGraphOptions() in SharpEdges.h); lines read off as
+// chains between nodes of degree other than 2, and cycles.
 #pragma once
 
 #include <vector>
@@ -87,6 +90,34 @@ struct ClusterGraphOptions
     double facingEndsRadius = 48.0;
     /// Degrees: "ahead" is within this angle of the line's direction at its end.
     double reconnectAngle = 50.0;
+    /// A free end still left after the joins above and the dropping of short pieces is
+    /// extended straight ahead, up to this distance, to the first node of a line it points at
+    /// (0: never); its direction is read over minBranchLength, then a half and a quarter of
+    /// it (an end just past a bend of its line). An end within half maxEdgeLength of another
+    /// line's node is joined to it whatever its direction: it stops beside that line. When
+    /// the caller gives supporting points, an end with nothing ahead is joined to the nearest
+    /// node within twice reconnectRadius in any direction whose way there is supported (an
+    /// end at a corner whose other edges left no candidates).
+    double extendReach = 0.0;
+    /// Degrees: "points at" for extendReach: the node lies within this angle of the end's
+    /// direction (plus half maxEdgeLength sideways, for the node's own offset).
+    double extendAngle = 10.0;
+    /// When the caller gives supporting points (buildClusterGraph), every join longer than
+    /// half maxEdgeLength (reconnection, facing and converging ends, extension) needs this
+    /// share of the steps (one spacing apart) along it to have a candidate or supporting
+    /// point within supportRadius: most of the way, as a crease's normals bend all along it
+    /// (noise leaves a step without support now and then), while a way across a face finds
+    /// support only near its ends.
+    double minExtendSupport = 0.8;
+    /// x spacing: the half width of a band of candidates, nodeRadius.
+    double supportRadius = 1.5;
+    /// Free ends left at the very end are removed with their branch up to the first junction,
+    /// and open pieces ending in nothing on both sides go whole, when the branch or piece is
+    /// no longer than this (0: never): every line left closes or ends on other lines, unless
+    /// it is too long to be anything but a real, broken edge. Off here because the
+    /// smooth-edge stage anchors its free ends on the sharp lines after the graph
+    /// (SmoothEdges.h); the sharp stage turns it on (sharpGraphOptions()).
+    double maxFreeEndLength = 0.0;
     /// A reconnection is refused when it would close a cycle shorter than this many times the
     /// new edge: joining an end back onto its own line a little behind it only makes a loop.
     double minCycleRatio = 3.0;
@@ -127,10 +158,12 @@ struct ClusterGraphCounts
     int overlongEdges = 0;  ///< tree edges cut for length
     int prunedBranches = 0; ///< short branches cut
     int reconnections = 0;  ///< edges added from free ends
+    int extensions = 0;     ///< free ends extended to the line they point at
     int bubbles = 0;        ///< parallel chains dropped
     int mergedJunctions = 0;
     int droppedComponents = 0;
-    int freeEnds = 0; ///< line ends left on no other line
+    int removedFreeEnds = 0; ///< branches and open pieces removed for a free end
+    int freeEnds = 0;        ///< line ends left on no other line
 };
 
 struct ClusterGraph
@@ -157,13 +190,18 @@ struct ClusterGraph
 ///   spacing           the cloud's mean point spacing (every option length is a multiple of it)
 ///   clusterLabel      empty, or #C labels; nodes never mix labels and lines carry the
 ///                     majority label of their nodes
+///   supportingPoint   empty, or #P nonzero for the points a line may run through where it
+///                     left no candidate (the sharp stage: points whose normals bend like a
+///                     crease's); joins across gaps must then run along them or along
+///                     candidates (minExtendSupport)
 /// Throws std::invalid_argument when the sizes disagree, a cluster id is out of range or the
 /// spacing is not a positive number.
 ClusterGraph buildClusterGraph(const PointMatrix& P, const Neighbourhoods& N,
                                const std::vector<int>& cluster,
                                const std::vector<char>& candidateCluster, double spacing,
                                const ClusterGraphOptions& options = {},
-                               const std::vector<int>& clusterLabel = {});
+                               const std::vector<int>& clusterLabel = {},
+                               const std::vector<char>& supportingPoint = {});
 
 /// The polyline smoothed along its length over `length` (the standard deviation of the
 /// equivalent Gaussian): resampled at a quarter of `length`, then eight passes of (1/4, 1/2,

@@ -331,8 +331,14 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     ClusterGraphOptions graphOptions = options.graph;
     graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
+    // Free ends are extended only along points whose normals spread as a crease's do: a
+    // crease that left too few candidates (noise thins them) still bends the normals.
+    std::vector<char> bending(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        bending[i] = s.spread(i) > s.growAngle ? 1 : 0;
+    }
     const ClusterGraph graph =
-        buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label);
+        buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label, bending);
     result.counts = graph.counts;
 
     // The points of every node, to start the search for the faces around it.

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The cluster graph on hand-made bands of candidate points whose lines are known: a square
 // ring closes into one loop, a cross meets at one junction, a broken ring is reconnected, a
-// spur is pruned, separate rings stay separate, a speck is dropped.
+// spur is pruned, a line stopping short of another is extended to it (along supporting points
+// only), free ends are removed up to a length, separate rings stay separate, a speck is
+// dropped.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -188,6 +190,90 @@ TEST(ClusterGraph, ShortSpurIsPrunedLongBranchIsKept)
     EXPECT_NEAR(r.graph.network.junctions(0, 0), 0.0, 2.0);
 }
 
+TEST(ClusterGraph, FreeEndPointingAtALineIsExtendedToIt)
+{
+    // A T whose stem stops 19 spacings short of the bar: beyond the reconnection, facing no
+    // other end, heading for no corner. Extended straight ahead, it ends on the bar.
+    const PointMatrix P = band(
+        50.0,
+        [](double x, double y) {
+            const bool bar = std::abs(y) < 1.0 && std::abs(x) < 40.0;
+            const bool stem = std::abs(x) < 1.0 && y > 20.0 && y < 44.0;
+            return bar || stem;
+        },
+        10);
+    EXPECT_EQ(runGraph(P).graph.network.junctions.rows(), 0) << "off by default";
+    ClusterGraphOptions options;
+    options.extendReach = 48.0;
+    const GraphRun r = runGraph(P, options);
+    EXPECT_EQ(r.graph.counts.extensions, 1);
+    ASSERT_EQ(r.graph.network.junctions.rows(), 1);
+    EXPECT_LT(r.graph.network.junctions.row(0).norm(), 2.0) << "the stem meets the bar below it";
+    EXPECT_EQ(r.graph.network.lines.size(), 3u);
+}
+
+TEST(ClusterGraph, ExtensionRunsOnlyAlongSupportingPoints)
+{
+    // The same T with points in the gap that are no candidates: the stem is extended across
+    // the gap only when they are marked as supporting (as a crease's bending normals mark
+    // them), never across points that are not.
+    const PointMatrix P = band(
+        50.0,
+        [](double x, double y) {
+            const bool bar = std::abs(y) < 1.0 && std::abs(x) < 40.0;
+            const bool stemAndGap = std::abs(x) < 1.0 && y > 0.0 && y < 44.0;
+            return bar || stemAndGap;
+        },
+        11);
+    const Neighbourhoods N = nearestNeighbours(P);
+    std::vector<int> cluster(P.rows());
+    std::vector<char> candidate(P.rows()), gap(P.rows()), none(P.rows(), 0);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        cluster[i] = static_cast<int>(i);
+        gap[i] = std::abs(P(i, 1)) >= 1.0 && P(i, 1) <= 20.0 ? 1 : 0;
+        candidate[i] = gap[i] ? 0 : 1;
+    }
+    ClusterGraphOptions options;
+    options.extendReach = 48.0;
+    const double spacing = meanSpacing(N);
+    const ClusterGraph across =
+        buildClusterGraph(P, N, cluster, candidate, spacing, options, {}, gap);
+    EXPECT_EQ(across.network.junctions.rows(), 1);
+    const ClusterGraph refused =
+        buildClusterGraph(P, N, cluster, candidate, spacing, options, {}, none);
+    EXPECT_EQ(refused.network.junctions.rows(), 0);
+    EXPECT_EQ(refused.counts.extensions, 0);
+}
+
+TEST(ClusterGraph, FreeEndsThatReachNothingAreRemovedUpToALength)
+{
+    // A ring with an arm 20 spacings long, then 60 long, both ending in nothing: with
+    // maxFreeEndLength 48 the short arm goes (the ring is left closed), the long one stays.
+    for (const double length : {20.0, 60.0}) {
+        const PointMatrix P = band(
+            80.0,
+            [length](double x, double y) {
+                const bool arm = std::abs(y) < 1.0 && x > 16.0 && x < 16.0 + length;
+                return squareRing(x, y) || arm;
+            },
+            12);
+        ClusterGraphOptions options;
+        options.maxFreeEndLength = 48.0;
+        const GraphRun r = runGraph(P, options);
+        SCOPED_TRACE("arm of " + std::to_string(length));
+        if (length < 48.0) {
+            EXPECT_EQ(r.graph.counts.removedFreeEnds, 1);
+            ASSERT_EQ(r.graph.network.lines.size(), 1u);
+            EXPECT_TRUE(r.graph.network.lines[0].closed);
+            EXPECT_EQ(r.graph.counts.freeEnds, 0);
+        } else {
+            EXPECT_EQ(r.graph.counts.removedFreeEnds, 0);
+            EXPECT_EQ(r.graph.network.junctions.rows(), 1);
+            EXPECT_EQ(r.graph.counts.freeEnds, 1);
+        }
+    }
+}
+
 TEST(ClusterGraph, SeparateRingsStaySeparateAndSpecksAreDropped)
 {
     const PointMatrix P = band(
@@ -265,6 +351,8 @@ TEST(ClusterGraph, BadInputThrows)
     cluster[2] = 0;
     EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 0.0), std::invalid_argument);
     EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, std::vector<int>(2, 0)),
+                 std::invalid_argument);
+    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, {}, std::vector<char>(2, 0)),
                  std::invalid_argument);
     // Nothing marked as candidate: an empty network, no crash.
     const ClusterGraph none = buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 0), 1.0);

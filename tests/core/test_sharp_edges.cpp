@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Sharp edges on shapes whose edges are known: a cube has twelve, meeting three by three at
 // eight corners, with or without noise; an open box has eight ending on its rim; a plane, a
-// sphere, an open tube and a cube rounded with fillets of six spacings have none.
+// sphere, an open tube and a cube rounded with fillets of six spacings have none; a chamfered
+// cube has 48 (half of them 35 degree creases) in one closed network, with or without noise;
+// a ridge of 35 degrees is sharp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -312,4 +314,167 @@ TEST(SharpEdges, DegenerateInputIsRefused)
     EXPECT_THROW(nearestNeighbours(plane.points.topRows(10)), std::invalid_argument);
     const PointMatrix same = PointMatrix::Ones(30, 3);
     EXPECT_THROW(meanSpacing(nearestNeighbours(same)), std::invalid_argument);
+}
+
+namespace {
+
+/// The edges of shapes::chamferedCube(edge, chamfer): 24 between faces and chamfers (45
+/// degrees), 24 between chamfers and corner triangles (35.26 degrees).
+std::vector<Segment> chamferedCubeEdges(double edge, double chamfer, bool shallow)
+{
+    const double h = edge / 2, k = h - chamfer;
+    std::vector<Segment> edges;
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (double sb : {-1.0, 1.0}) {
+            for (double sc : {-1.0, 1.0}) {
+                // The chamfer along axis a at corner (sb, sc) of the other two: its two long
+                // edges on the faces b and c, and the short edges to the corner triangles.
+                Eigen::Vector3d p, q;
+                p[a] = -k;
+                q[a] = k;
+                p[b] = q[b] = sb * h;
+                p[c] = q[c] = sc * k;
+                if (!shallow) {
+                    edges.push_back({p, q});
+                }
+                Eigen::Vector3d r = p, s = q;
+                r[b] = s[b] = sb * k;
+                r[c] = s[c] = sc * h;
+                if (!shallow) {
+                    edges.push_back({r, s});
+                } else {
+                    edges.push_back({p, r});
+                    edges.push_back({q, s});
+                }
+            }
+        }
+    }
+    return edges;
+}
+
+/// Share of the segment's length within `tolerance` of a line of the network.
+double coverage(const Segment& e, const LineNetwork& network, double tolerance)
+{
+    int covered = 0;
+    const int samples = 50;
+    for (int s = 0; s <= samples; ++s) {
+        const Eigen::Vector3d p = e.a + (e.b - e.a) * (static_cast<double>(s) / samples);
+        for (const Polyline& line : network.lines) {
+            if (distanceToPolyline(p, line) < tolerance) {
+                ++covered;
+                break;
+            }
+        }
+    }
+    return covered / static_cast<double>(samples + 1);
+}
+
+} // namespace
+
+/// Every line closes on itself or ends on junctions at both ends.
+void expectClosedNetwork(const LineNetwork& network)
+{
+    for (const Polyline& line : network.lines) {
+        EXPECT_TRUE(line.closed || (line.startJunction >= 0 && line.endJunction >= 0))
+            << "a line with a free end";
+    }
+}
+
+/// Share of the vertices of the network within `tolerance` of one of the edges.
+double shareOnEdges(const LineNetwork& network, const std::vector<Segment>& edges, double tolerance)
+{
+    int on = 0, all = 0;
+    for (const Polyline& line : network.lines) {
+        for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+            double d = std::numeric_limits<double>::infinity();
+            for (const Segment& e : edges) {
+                d = std::min(d, e.distance(line.points.row(i).transpose()));
+            }
+            on += d < tolerance ? 1 : 0;
+            ++all;
+        }
+    }
+    return all > 0 ? on / static_cast<double>(all) : 0.0;
+}
+
+double meanCoverage(const std::vector<Segment>& edges, const LineNetwork& network, double tolerance)
+{
+    double sum = 0.0;
+    for (const Segment& e : edges) {
+        sum += coverage(e, network, tolerance);
+    }
+    return sum / static_cast<double>(edges.size());
+}
+
+TEST(SharpEdges, ChamferedCubeHasItsFortyEightEdgesInOneClosedNetwork)
+{
+    // 24 edges of 45 degrees, 24 of 35 degrees around the corner triangles (whose inradius,
+    // 3.7 spacings, is barely a neighbourhood).
+    const double edge = 60.0, chamfer = 9.0;
+    for (unsigned seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const SharpRun r = extract(shapes::chamferedCube(edge, chamfer, 1.0, seed));
+        expectClosedNetwork(r.sharp.network);
+        const double tolerance = 2.0 * r.spacing;
+        const std::vector<Segment> steep = chamferedCubeEdges(edge, chamfer, false);
+        const std::vector<Segment> shallow = chamferedCubeEdges(edge, chamfer, true);
+        std::vector<Segment> all = steep;
+        all.insert(all.end(), shallow.begin(), shallow.end());
+        EXPECT_EQ(shareOnEdges(r.sharp.network, all, tolerance), 1.0);
+        for (const Segment& e : steep) {
+            EXPECT_GE(coverage(e, r.sharp.network, tolerance), 0.9);
+        }
+        EXPECT_GE(meanCoverage(shallow, r.sharp.network, tolerance), 0.9);
+    }
+}
+
+TEST(SharpEdges, NoisyChamferedCubeIsOneClosedNetwork)
+{
+    // Noise of 0.3 spacing thins the candidates of the 45 degree creases and mostly hides the
+    // 35 degree ones: the free ends left are extended to the lines they point at, along
+    // points whose normals bend, or removed.
+    const double edge = 60.0, chamfer = 9.0;
+    for (unsigned seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        shapes::Sample cube = shapes::chamferedCube(edge, chamfer, 1.0, seed);
+        const double spacing = meanSpacing(nearestNeighbours(cube.points));
+        shapes::addNormalNoise(cube, 0.3 * spacing, seed + 10);
+        const SharpRun r = extract(cube);
+        EXPECT_EQ(r.sharp.counts.freeEnds, 0);
+        expectClosedNetwork(r.sharp.network);
+        std::vector<Segment> all = chamferedCubeEdges(edge, chamfer, false);
+        const std::vector<Segment> shallow = chamferedCubeEdges(edge, chamfer, true);
+        all.insert(all.end(), shallow.begin(), shallow.end());
+        EXPECT_GE(shareOnEdges(r.sharp.network, all, 3.0 * r.spacing), 0.95);
+        EXPECT_GE(meanCoverage(chamferedCubeEdges(edge, chamfer, false), r.sharp.network,
+                               3.0 * r.spacing),
+                  0.85);
+    }
+}
+
+TEST(SharpEdges, RidgeOfThirtyFiveDegreesIsSharpOnACleanCloud)
+{
+    // A house-shaped prism: walls 30 apart, a roof whose ridge turns the normal by 35
+    // degrees, eaves of 72.5 degrees, right angles elsewhere: 15 edges.
+    const double w = 15.0, pi = 3.14159265358979323846;
+    const double rise = w * std::tan(17.5 * pi / 180.0);
+    const std::vector<Eigen::Vector2d> section = {
+        {-w, -15.0}, {w, -15.0}, {w, 10.0}, {0.0, 10.0 + rise}, {-w, 10.0}};
+    const double height = 40.0;
+    const SharpRun r = extract(shapes::prism(section, height, 1.0, 1));
+    expectClosedNetwork(r.sharp.network);
+    std::vector<Segment> edges;
+    for (std::size_t k = 0; k < section.size(); ++k) {
+        const Eigen::Vector2d a = section[k], b = section[(k + 1) % section.size()];
+        edges.push_back({{a.x(), a.y(), -height / 2}, {a.x(), a.y(), height / 2}});
+        for (double z : {-height / 2, height / 2}) {
+            edges.push_back({{a.x(), a.y(), z}, {b.x(), b.y(), z}});
+        }
+    }
+    const double tolerance = 2.0 * r.spacing;
+    EXPECT_EQ(shareOnEdges(r.sharp.network, edges, tolerance), 1.0);
+    for (const Segment& e : edges) {
+        EXPECT_GE(coverage(e, r.sharp.network, tolerance), 0.9);
+    }
 }
