@@ -5,6 +5,7 @@
 // cloud (ShapeSampling.h), take the typed edges of the B-rep as truth, run every detector,
 // and score it (LineScore.h): precision, recall and F1 per edge type, closedness. Method and
 // results: docs/ACCURACY.md.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "FeatureLines/Extraction.h"
@@ -49,9 +51,26 @@ std::optional<std::vector<TypedPolyline>> runFeatureLines(const PointMatrix& clo
 }
 // ---------------------------------------------------------------------------------------------
 
+/// The measured parts, then the held-out ones (whose seeds follow on, so that the measured
+/// parts' clouds do not change).
+std::vector<std::string> allShapeNames()
+{
+    std::vector<std::string> names = cadShapeNames();
+    for (const std::string& n : heldOutShapeNames()) {
+        names.push_back(n);
+    }
+    return names;
+}
+
+bool isHeldOut(const std::string& name)
+{
+    const std::vector<std::string> held = heldOutShapeNames();
+    return std::find(held.begin(), held.end(), name) != held.end();
+}
+
 struct Arguments
 {
-    std::vector<std::string> shapes = cadShapeNames();
+    std::vector<std::string> shapes = allShapeNames();
     /// Points per part; the sampling radius follows from the part's area.
     double points = 50000.0;
     /// When > 0: sampling radius as this fraction of the part's bounding-box diagonal
@@ -73,7 +92,7 @@ const char* usage =
     "Usage: featurelines_accuracy [options]\n"
     "  --shapes a,b,c          parts to run (default: all): box_fillets, box_chamfers,\n"
     "                          variable_fillet, boss_blend, plate_holes, open_sheet,\n"
-    "                          close_fillets\n"
+    "                          close_fillets, and the held-out wedge, chamfered_cylinder\n"
     "  --points N              points per part (default 50000)\n"
     "  --spacing-fraction F    Poisson-disk radius as a fraction of the part's bounding-box\n"
     "                          diagonal (overrides --points)\n"
@@ -164,7 +183,7 @@ Arguments parseArguments(int argc, char** argv)
     }
     for (const std::string& s : a.shapes) {
         bool known = false;
-        for (const std::string& n : cadShapeNames()) {
+        for (const std::string& n : allShapeNames()) {
             known = known || n == s;
         }
         if (!known) {
@@ -434,6 +453,8 @@ struct Row
     LineScore score;
     double seconds = 0.0;
     bool perPoint = false;
+    /// A held-out part (CadShapes.h): its means are reported apart.
+    bool heldOut = false;
 };
 
 std::string fmt(double v, int decimals = 3)
@@ -575,7 +596,7 @@ int run(const Arguments& args)
     };
 
     std::vector<std::vector<std::string>> partRows;
-    const auto names = cadShapeNames();
+    const auto names = allShapeNames();
     for (const std::string& name : args.shapes) {
         const size_t shapeIndex =
             static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
@@ -626,6 +647,7 @@ int run(const Arguments& args)
             // The project's extraction.
             {
                 Row row(name, noise, "featurelines");
+                row.heldOut = isHeldOut(name);
                 const auto start = std::chrono::steady_clock::now();
                 const auto lines = runFeatureLines(cloud.points);
                 row.seconds = seconds(start);
@@ -640,6 +662,7 @@ int run(const Arguments& args)
                 const std::filesystem::path file =
                     std::filesystem::path(args.linesDir) / caseName / "lines.json";
                 Row row(name, noise, "lines.json");
+                row.heldOut = isHeldOut(name);
                 if (std::filesystem::exists(file)) {
                     row.available = true;
                     row.score = scoreLines(readLinesJson(file.string()), truth, scoring);
@@ -653,12 +676,14 @@ int run(const Arguments& args)
                 const auto start = std::chrono::steady_clock::now();
                 const std::vector<double> v = values();
                 Row row(name, noise, label + " > " + fmt(fixed, fixed < 1 ? 2 : 0));
+                row.heldOut = isHeldOut(name);
                 row.seconds = seconds(start);
                 row.available = true;
                 row.perPoint = true;
                 row.score = scoreFlaggedPoints(pointsAbove(cloud.points, v, fixed), truth, scoring);
                 rows.push_back(row);
-                for (double t : sweep) {
+                // The sweeps are over the measured parts only, like the means.
+                for (double t : isHeldOut(name) ? std::vector<double>{} : sweep) {
                     const LineScore s =
                         scoreFlaggedPoints(pointsAbove(cloud.points, v, t), truth, scoring);
                     SweepResult& slot = sweepSlot(label, noise, t);
@@ -703,27 +728,30 @@ int run(const Arguments& args)
     }
     printTable(header, table, args.markdown);
 
-    // Mean per detector and noise level.
+    // Mean per detector and noise level, over the measured parts and, apart, over the
+    // held-out ones.
     std::vector<std::vector<std::string>> means;
-    std::vector<std::pair<std::string, std::string>> keys;
+    std::vector<std::tuple<bool, std::string, std::string>> keys;
     for (const Row& r : rows) {
-        const auto key = std::make_pair(r.detector, r.noise);
+        const auto key = std::make_tuple(r.heldOut, r.detector, r.noise);
         if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
             keys.push_back(key);
         }
     }
-    for (const auto& key : keys) {
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+    for (const auto& [heldOut, detector, noise] : keys) {
         std::vector<const Row*> group;
         bool available = true;
         bool perPoint = false;
         for (const Row& r : rows) {
-            if (r.detector == key.first && r.noise == key.second) {
+            if (r.heldOut == heldOut && r.detector == detector && r.noise == noise) {
                 available = available && r.available;
                 perPoint = r.perPoint;
                 group.push_back(&r);
             }
         }
-        std::vector<std::string> cells = {"mean", key.second, key.first};
+        std::vector<std::string> cells = {heldOut ? "mean held-out" : "mean", noise, detector};
         const LineScore m = available ? meanScore(group) : LineScore{};
         const auto sc = scoreCells(m, available);
         cells.insert(cells.end(), sc.begin(), sc.end());
@@ -733,7 +761,7 @@ int run(const Arguments& args)
         means.push_back(cells);
     }
     if (!args.markdown) {
-        std::cout << "Mean over the parts that have the edge type\n";
+        std::cout << "Mean over the parts that have the edge type (held-out parts apart)\n";
     }
     printTable(header, means, args.markdown);
 
