@@ -9,6 +9,7 @@
 #include <CXX/Objects.hxx>
 
 #include <algorithm>
+#include <atomic>
 
 namespace FeatureLines {
 
@@ -18,18 +19,44 @@ constexpr size_t totalSteps = 100;
 
 /// The observer, with a reference held (never released at exit: the interpreter may be gone);
 /// nullptr when none is set.
-PyObject* observer = nullptr;
+std::atomic<PyObject*> observer{nullptr};
 
 } // namespace
 
 void setProgressObserver(PyObject* callable)
 {
     Base::PyGILStateLocker lock;
-    Py_XDECREF(observer);
-    observer = nullptr;
+    Py_XDECREF(observer.exchange(nullptr));
     if (callable && callable != Py_None) {
         Py_INCREF(callable);
         observer = callable;
+    }
+}
+
+bool notifyProgressObserver(double done, const std::string& stage)
+{
+    // Without an observer no lock is taken: a worker thread then never waits for the
+    // interpreter.
+    if (!observer.load()) {
+        return true;
+    }
+    Base::PyGILStateLocker lock;
+    PyObject* callable = observer.load();
+    if (!callable) {
+        return true;
+    }
+    try {
+        Py::Callable call(callable);
+        Py::Tuple args(2);
+        args.setItem(0, Py::Float(done));
+        args.setItem(1, Py::String(stage));
+        const Py::Object answer = call.apply(args);
+        // Only an explicit False cancels: an observer that prints and returns None goes on.
+        return !(answer.ptr() == Py_False);
+    } catch (Py::Exception&) {
+        Base::PyException e; // fetches and clears the Python error
+        Base::Console().Error("FeatureLines progress observer failed, cancelling: %s\n", e.what());
+        return false;
     }
 }
 
@@ -68,23 +95,7 @@ bool ExtractionProgress::report(double done, const std::string& stage)
     if (launcher->wasCanceled()) {
         return false;
     }
-    Base::PyGILStateLocker lock;
-    if (!observer) {
-        return true;
-    }
-    try {
-        Py::Callable call(observer);
-        Py::Tuple args(2);
-        args.setItem(0, Py::Float(done));
-        args.setItem(1, Py::String(stage));
-        const Py::Object answer = call.apply(args);
-        // Only an explicit False cancels: an observer that prints and returns None goes on.
-        return !(answer.ptr() == Py_False);
-    } catch (Py::Exception&) {
-        Base::PyException e; // fetches and clears the Python error
-        Base::Console().Error("FeatureLines progress observer failed, cancelling: %s\n", e.what());
-        return false;
-    }
+    return notifyProgressObserver(done, stage);
 }
 
 } // namespace FeatureLines

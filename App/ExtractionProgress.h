@@ -31,8 +31,13 @@ private:
 };
 
 /// Sets the callable called as observer(fraction_done, stage_name) at every stage of every
-/// extraction (document recomputes and FeatureLines.extract()); returning False cancels the
-/// run, raising an exception cancels it too. nullptr or None removes it.
+/// extraction (document recomputes, FeatureLines.extract() and the task panel's analyses);
+/// returning False cancels the run, raising an exception cancels it too. nullptr or None
+/// removes it.
 void setProgressObserver(PyObject* callable);
+
+/// Calls the observer, if one is set, from any thread (it takes the interpreter lock): false
+/// when it cancels the run.
+bool notifyProgressObserver(double done, const std::string& stage);
 
 } // namespace FeatureLines

@@ -2,6 +2,7 @@
 #include <FCConfig.h>
 
 #include "AnalysisRun.h"
+#include "ExtractionProgress.h"
 
 #include <QThread>
 
@@ -35,7 +36,9 @@ bool AnalysisRun::start(FeatureLines::ExtractionInput input)
     thread = QThread::create([this] {
         FeatureLines::ExtractionInput& in = last.input;
         in.options.progress = [this](double done, const std::string& stage) {
-            if (cancelRequested) {
+            // A script's observer (FeatureLines.setProgressObserver) sees and may cancel the
+            // panel's runs as it does a recompute's.
+            if (cancelRequested || !FeatureLines::notifyProgressObserver(done, stage)) {
                 return false;
             }
             Q_EMIT progressed(static_cast<int>(std::lround(100.0 * done)),

@@ -1,10 +1,16 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """A long analysis runs in the background: on a cloud of about 95 000 points the panel shows its
 progress while the interface goes on (this test's own steps run meanwhile), Cancel stops it
-with the document as it was, and Cancel of the dialog leaves no object and no undo step."""
+with the document as it was, and Cancel of the dialog leaves no object and no undo step.
+
+However fast the machine, the run must still be going when Cancel is pressed: a progress
+observer (FeatureLines.setProgressObserver, which the panel's runs report to as recomputes do)
+holds the worker thread at its first report until this test has pressed Cancel run."""
 
 import os
 import sys
+import threading
+import time
 
 sys.path.insert(0, os.environ.get("FEATURELINES_GUI_TEST_DIR") or os.path.dirname(__file__))
 
@@ -18,6 +24,19 @@ def setup():
     import FreeCADGui
     import sampled_shapes
 
+    import FeatureLines
+
+    pressed = threading.Event()
+    state["pressed"] = pressed
+
+    def hold_until_cancel_is_pressed(done, stage):
+        # Runs in the worker thread; waiting releases the interpreter to the GUI's steps.
+        deadline = time.monotonic() + 60
+        while not pressed.is_set() and time.monotonic() < deadline:
+            time.sleep(0.02)
+        return True
+
+    FeatureLines.setProgressObserver(hold_until_cancel_is_pressed)
     g.prepare_window()
     doc = FreeCAD.newDocument("Cancel")
     state["doc"] = doc
@@ -40,10 +59,14 @@ def running():
     bar = g.find(QtWidgets.QProgressBar, "progressBar")
     g.check(bar.isVisible(), "the progress bar shows")
     g.click("buttonCancelRun")
+    state["pressed"].set()
     g.grab_widget(g.find(QtWidgets.QWidget, "TaskExtractionOptions"), "cancel_running_panel")
 
 
 def cancelled():
+    import FeatureLines
+
+    FeatureLines.setProgressObserver(None)
     lines = state["lines"]
     status = g.label("labelStatus")
     g.check("cancelled" in status, "the panel says so: %s" % status)
