@@ -20,6 +20,25 @@ import time
 import traceback
 
 
+def open_line_ends(lines, tolerance):
+    """Of the open wires, how many have both ends within `tolerance` of another wire (a network
+    joined at its ends, e.g. a fillet border ending on a sharp edge) and how many do not."""
+    import Part
+
+    wires = lines.SharpWires.Wires + lines.SmoothWires.Wires + lines.BoundaryWires.Wires
+    joined = free = 0
+    for i, wire in enumerate(wires):
+        if wire.isClosed():
+            continue
+        others = Part.makeCompound([w for j, w in enumerate(wires) if j != i] or [wire])
+        ends = (wire.OrderedVertexes[0], wire.OrderedVertexes[-1])
+        if len(wires) < 2 or any(others.distToShape(end)[0] > tolerance for end in ends):
+            free += 1
+        else:
+            joined += 1
+    return joined, free
+
+
 def summary(cloud, lines, seconds):
     spacing = lines.Spacing.Value
     print("")
@@ -30,8 +49,9 @@ def summary(cloud, lines, seconds):
     print("  smooth lines    %d (fillet borders)" % lines.SmoothLineCount)
     print("  boundary lines  %d" % lines.BoundaryLineCount)
     total = lines.SharpLineCount + lines.SmoothLineCount + lines.BoundaryLineCount
-    print("  closed          %d of %d; the others end on %d junctions" %
-          (lines.ClosedLineCount, total, len(lines.Junctions)))
+    joined, free = open_line_ends(lines, 3 * spacing)
+    print("  closed          %d of %d; %d end on other lines, %d have a free end" %
+          (lines.ClosedLineCount, total, joined, free))
     print("  smooth regions  %d, patches %d" % (lines.RegionCount, lines.PatchCount))
     by_region = {}
     for region, threshold in zip(lines.UsedThresholdRegions, lines.UsedThresholds):
