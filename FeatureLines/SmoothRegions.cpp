@@ -6,6 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace featurelines {
 
@@ -33,11 +34,25 @@ public:
                 }
             }
         }
+        // The cells next to a sample cell: a point in none of them is farther than the width
+        // from every sample, which one look-up tells (most points of a cloud are).
+        for (const auto& [c, samples] : cells_) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dz = -1; dz <= 1; ++dz) {
+                        near_.insert(Key{c.x + dx, c.y + dy, c.z + dz});
+                    }
+                }
+            }
+        }
     }
 
     bool contains(const Eigen::RowVector3d& p) const
     {
         const Key c = cell(p);
+        if (near_.find(c) == near_.end()) {
+            return false;
+        }
         for (int dx = -1; dx <= 1; ++dx) {
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dz = -1; dz <= 1; ++dz) {
@@ -82,6 +97,7 @@ private:
 
     double width_;
     std::unordered_map<Key, std::vector<Eigen::RowVector3d>, KeyHash> cells_;
+    std::unordered_set<Key, KeyHash> near_;
 };
 
 } // namespace
