@@ -352,12 +352,25 @@ public:
     /// supporting point within the radius.
     double along(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double spacing) const
     {
-        const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
+        return alongCurve(a, Eigen::Vector3d::Zero(), b, Eigen::Vector3d::Zero(), spacing);
+    }
+
+    /// The same along the cubic (Hermite) curve from a, leaving in direction da, to b,
+    /// arriving against db (unit directions, or zero for a straight segment): the way two
+    /// facing ends of a curved crease (an arc of a hole or a rim) continue into each other,
+    /// where their chord cuts the bend by up to a quarter of the gap squared over the radius.
+    double alongCurve(const Eigen::Vector3d& a, const Eigen::Vector3d& da, const Eigen::Vector3d& b,
+                      const Eigen::Vector3d& db, double spacing) const
+    {
+        const double length = (b - a).norm();
+        const int steps = std::max(1, static_cast<int>(std::ceil(length / spacing)));
         int supported = 0;
         for (int s = 0; s <= steps; ++s) {
+            const double t = static_cast<double>(s) / steps, t2 = t * t, t3 = t2 * t;
+            const Eigen::Vector3d x = (2 * t3 - 3 * t2 + 1) * a + (t3 - 2 * t2 + t) * length * da +
+                                      (-2 * t3 + 3 * t2) * b + (t3 - t2) * length * (-db);
             bool found = false;
-            grid_->forEachWithin(a + (b - a) * (static_cast<double>(s) / steps), radius_,
-                                 [&](int) { found = true; });
+            grid_->forEachWithin(x, radius_, [&](int) { found = true; });
             supported += found ? 1 : 0;
         }
         return supported / static_cast<double>(steps + 1);
@@ -485,8 +498,11 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options, const Support* 
         return 0;
     }
     // Half the reconnection's cone: far apart, two ends of parallel lines running opposite
-    // ways could otherwise face each other across the gap between the lines.
-    const double cosAngle = std::cos(0.5 * options.reconnectAngle * pi / 180.0);
+    // ways could otherwise face each other across the gap between the lines. With supporting
+    // points the join must follow the curve the two ends continue into each other along,
+    // which such a gap does not support: the whole cone, as the ends of an arc (a hole's rim)
+    // broken over a gap meet its chord at half the arc's angle, and noise adds its own.
+    const double cosAngle = std::cos((support ? 1.0 : 0.5) * options.reconnectAngle * pi / 180.0);
     const double directionLength = std::max(options.minBranchLength, 1.0) * spacing;
     std::vector<int> ends;
     std::vector<Eigen::Vector3d> tips, directions;
@@ -524,7 +540,10 @@ int joinFacingEnds(Graph& g, const ClusterGraphOptions& options, const Support* 
         if (along.count(v)) {
             continue; // the two ends of one short piece
         }
-        if (!supported(support, g.centre(u), g.centre(v), options, spacing)) {
+        // Along the curve the two ends continue into each other.
+        if (support && (g.centre(v) - g.centre(u)).norm() > 0.5 * options.maxEdgeLength * spacing &&
+            support->alongCurve(g.centre(u), directions[a], g.centre(v), directions[b], spacing) <
+                options.minExtendSupport) {
             continue;
         }
         g.addEdge(u, v);
@@ -678,7 +697,18 @@ int extendFreeEnds(Graph& g, const ClusterGraphOptions& options, const Support* 
             double chosenAlong = 0.0;
             for (std::size_t t = 0; t < tries && chosen < 0; ++t) {
                 const auto [along, aside, target] = ahead[t];
-                if (!supported(support, tip, g.centre(target), options, spacing)) {
+                // Along the way the end continues on: leaving in its direction, arriving
+                // against the target's own end direction when that is a free end too (two
+                // ends of a curved crease), else along the chord.
+                const Eigen::Vector3d chord = g.centre(target) - tip;
+                Eigen::Vector3d arrival = chord.normalized();
+                Eigen::Vector3d other;
+                if (g.degree(target) == 1 && endDirection(g, target, length, other)) {
+                    arrival = -other;
+                }
+                if (support && chord.norm() > base &&
+                    support->alongCurve(tip, direction, g.centre(target), -arrival, spacing) <
+                        options.minExtendSupport) {
                     continue;
                 }
                 chosen = target;

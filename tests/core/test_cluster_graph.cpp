@@ -245,6 +245,32 @@ TEST(ClusterGraph, ExtensionRunsOnlyAlongSupportingPoints)
     EXPECT_EQ(refused.counts.extensions, 0);
 }
 
+TEST(ClusterGraph, ArcBrokenOverAGapCloses)
+{
+    // A circular band of radius 40 whose candidates are missing over 32 units of arc (a
+    // hole's rim where noise left none), the points there marked as supporting: the two ends
+    // meet the chord at 23 degrees each and join along the curve they continue into each other
+    // on, though the chord cuts the bend by 3 units, beyond the supporting band.
+    const double radius = 40.0;
+    const PointMatrix P = band(
+        45.0, [&](double x, double y) { return std::abs(std::hypot(x, y) - radius) < 1.0; }, 13);
+    const Neighbourhoods N = nearestNeighbours(P);
+    std::vector<int> cluster(P.rows());
+    std::vector<char> candidate(P.rows()), gap(P.rows());
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        cluster[i] = static_cast<int>(i);
+        gap[i] = P(i, 0) > 0.0 && std::abs(std::atan2(P(i, 1), P(i, 0))) < 0.4 ? 1 : 0;
+        candidate[i] = gap[i] ? 0 : 1;
+    }
+    ClusterGraphOptions options;
+    options.extendReach = 48.0;
+    const ClusterGraph g =
+        buildClusterGraph(P, N, cluster, candidate, meanSpacing(N), options, {}, gap);
+    ASSERT_EQ(g.network.lines.size(), 1u);
+    EXPECT_TRUE(g.network.lines[0].closed);
+    EXPECT_EQ(g.counts.freeEnds, 0);
+}
+
 TEST(ClusterGraph, FreeEndsThatReachNothingAreRemovedUpToALength)
 {
     // A ring with an arm 20 spacings long, then 60 long, both ending in nothing: with
