@@ -716,7 +716,7 @@ private:
         const AnalysedExtraction a = analysedExtraction(object, "regionPatches");
         const featurelines::RegionGeometry& g = regionGeometry(a.analysis, region);
         std::vector<int> patch;
-        regionPatches(g, levels, 0, patch);
+        featurelines::labelPatches(g, levels, 0, patch);
         return perSourcePoint(a, g, patch);
     }
 

@@ -179,41 +179,6 @@ std::vector<PointLabel> regionLabels(const RegionGeometry& region, double thresh
     return featurelines::labelPoints(region.curvature, threshold, region.ring, all, options.labels);
 }
 
-int regionPatches(const RegionGeometry& region, const std::vector<double>& thresholds, int firstId,
-                  std::vector<int>& patchOfRegionPoint)
-{
-    const Eigen::Index n = region.points.rows();
-    // A point's level: how many thresholds its curvature exceeds (values above tau are high).
-    std::vector<int> level(static_cast<size_t>(n), 0);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        for (double t : thresholds) {
-            level[i] += region.curvature[i] > t ? 1 : 0;
-        }
-    }
-    patchOfRegionPoint.assign(static_cast<size_t>(n), -1);
-    int next = firstId;
-    std::vector<int> stack;
-    for (Eigen::Index s = 0; s < n; ++s) {
-        if (patchOfRegionPoint[s] >= 0) {
-            continue;
-        }
-        patchOfRegionPoint[s] = next;
-        stack.assign(1, static_cast<int>(s));
-        while (!stack.empty()) {
-            const int p = stack.back();
-            stack.pop_back();
-            for (const int* q = region.ring.begin(p); q != region.ring.end(p); ++q) {
-                if (patchOfRegionPoint[*q] < 0 && level[*q] == level[p]) {
-                    patchOfRegionPoint[*q] = next;
-                    stack.push_back(*q);
-                }
-            }
-        }
-        ++next;
-    }
-    return next;
-}
-
 void scatterToInputPoints(const featurelines::CloudGeometry& cloud, const RegionGeometry& region,
                           const std::vector<int>& perRegionPoint, std::vector<int>& perInputPoint)
 {

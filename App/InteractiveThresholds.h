@@ -73,10 +73,6 @@ std::vector<featurelines::PointLabel> regionLabels(const featurelines::RegionGeo
                                                    double threshold,
                                                    const featurelines::SmoothEdgeOptions& options);
 
-/// Per region point its patch: the connected points (over the 1-rings) between the same two of
-/// `thresholds`, numbered from `firstId` on. Returns the next free number.
-int regionPatches(const featurelines::RegionGeometry& region, const std::vector<double>& thresholds,
-                  int firstId, std::vector<int>& patchOfRegionPoint);
 
 /// Per input point of the cloud (CloudGeometry::inputToPoint: duplicates share a point), the
 /// value of its point in `region` (`perRegionPoint`, one per region point), `outside` for the

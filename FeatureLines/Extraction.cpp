@@ -144,8 +144,8 @@ std::vector<double> regionThresholdList(const RegionGeometry& g, const Extractio
     return thresholds;
 }
 
-/// Patches: the connected pieces (over the 1-rings) of a region's points that lie between the
-/// same two thresholds.
+} // namespace
+
 int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds, int firstId,
                  std::vector<int>& patchOfRegionPoint)
 {
@@ -180,8 +180,6 @@ int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds,
     }
     return next;
 }
-
-} // namespace
 
 const char* lineTypeName(LineType type)
 {

@@ -901,7 +901,7 @@ void TaskExtraction::refreshPreview()
             const featurelines::RegionGeometry& rg =
                 FeatureLines::regionGeometry(analysis, region.id);
             std::vector<int> patchOf;
-            next = FeatureLines::regionPatches(rg, levels, next, patchOf);
+            next = featurelines::labelPatches(rg, levels, next, patchOf);
             FeatureLines::scatterToInputPoints(*analysis.geometry, rg, patchOf, patch);
         }
         for (size_t i = 0; i < colours.size(); ++i) {
