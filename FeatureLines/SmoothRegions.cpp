@@ -136,33 +136,46 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
         eligible[i] = !candidate && (band.empty() || !band.contains(P.row(i)));
     }
 
-    // 2. Connected components of the kNN graph over eligible points.
+    // 2. Connected components of the kNN graph over the eligible points. Where the sampling is
+    // sparse a neighbour can lie farther than the band is wide; such a long edge must not
+    // jump the band across a crease: it joins only when its middle lies off the band too.
+    const double longEdge2 = std::pow(options.bandWidth * spacing, 2);
     std::vector<int> component(static_cast<size_t>(n), -1);
     std::vector<int> sizes;
-    std::vector<int> stack;
-    for (Eigen::Index s = 0; s < n; ++s) {
-        if (!eligible[s] || component[s] >= 0) {
-            continue;
-        }
-        const int id = static_cast<int>(sizes.size());
-        sizes.push_back(0);
-        component[s] = id;
-        stack.assign(1, static_cast<int>(s));
-        while (!stack.empty()) {
-            const int p = stack.back();
-            stack.pop_back();
-            ++sizes[id];
-            for (int j = 0; j < N.k(); ++j) {
-                const int q = N.indices(p, j);
-                if (eligible[q] && component[q] < 0) {
-                    component[q] = id;
-                    stack.push_back(q);
+    const auto connect = [&]() {
+        std::fill(component.begin(), component.end(), -1);
+        sizes.clear();
+        std::vector<int> stack;
+        for (Eigen::Index s = 0; s < n; ++s) {
+            if (!eligible[s] || component[s] >= 0) {
+                continue;
+            }
+            const int id = static_cast<int>(sizes.size());
+            sizes.push_back(0);
+            component[s] = id;
+            stack.assign(1, static_cast<int>(s));
+            while (!stack.empty()) {
+                const int p = stack.back();
+                stack.pop_back();
+                ++sizes[id];
+                for (int j = 0; j < N.k(); ++j) {
+                    const int q = N.indices(p, j);
+                    if (eligible[q] && component[q] < 0 &&
+                        !(N.squaredDistances(p, j) > longEdge2 &&
+                          band.contains(0.5 * (P.row(p) + P.row(q))))) {
+                        component[q] = id;
+                        stack.push_back(q);
+                    }
                 }
             }
         }
-    }
+    };
+    connect();
 
-    // 3. Points that see too few of their own region, then regions too small to be regions.
+    // 3. Points that see too few of their own region leave it. They may have been the only
+    // link between two parts (a thin bridge of points where the band around a crease is
+    // narrow): the components are then found again without them, so that every region is
+    // connected.
     std::vector<char> tooFewInside(static_cast<size_t>(n), 0);
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -175,12 +188,14 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
         }
         tooFewInside[i] = inside < options.minRegionNeighbours;
     }
+    const bool removed = std::find(tooFewInside.begin(), tooFewInside.end(), 1) != tooFewInside.end();
     for (Eigen::Index i = 0; i < n; ++i) {
-        if (tooFewInside[i]) {
-            --sizes[component[i]];
-            component[i] = -1;
-        }
+        eligible[i] = eligible[i] && !tooFewInside[i];
     }
+    if (removed) {
+        connect();
+    }
+    // Then regions too small to be regions.
     const int minPoints = options.minRegionPoints > 0 ? options.minRegionPoints : 2 * N.k();
     std::vector<int> order(sizes.size());
     std::iota(order.begin(), order.end(), 0);
