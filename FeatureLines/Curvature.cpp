@@ -51,8 +51,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     const Eigen::Index n = P.rows();
     Eigen::VectorXd H(n);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index r = 0; r < n; ++r) {
-        const Eigen::Index i = N.visit(r);
+    for (Eigen::Index i = 0; i < n; ++i) {
         // Sec. 2.1: curv(p) from a quadric through the k nearest neighbours of p, here the
         // height function over p's tangent plane, origin at p, axes (u, v, n).
         const Eigen::Vector3d normal = normals.row(i).transpose();

@@ -73,6 +73,54 @@ PointMatrix distinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
     return distinct;
 }
 
+/// Bits 0..20 of v spread to every third bit (bit b to bit 3 b).
+std::uint64_t spreadBits(std::uint64_t v)
+{
+    v &= 0x1FFFFF;
+    v = (v | v << 32) & 0x1F00000000FFFFULL;
+    v = (v | v << 16) & 0x1F0000FF0000FFULL;
+    v = (v | v << 8) & 0x100F00F00F00F00FULL;
+    v = (v | v << 4) & 0x10C30C30C30C30C3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+/// The rows of P in one canonical spatial order: by the Morton (Z-order) key of their
+/// coordinates quantised to 2^21 steps over the bounding box, points of one key by their
+/// coordinates. Every stage then finds the neighbours of a point in nearby rows (the cache
+/// holds them even when the input is stored in random order), and, since the order depends on
+/// the points' positions only, the extraction gives the same result whatever the input order.
+/// Returns order: row r of the reordered cloud is row order[r] of P.
+std::vector<int> spatialOrder(const PointMatrix& P)
+{
+    const Eigen::Index n = P.rows();
+    const Eigen::RowVector3d low = P.colwise().minCoeff();
+    const double extent = (P.colwise().maxCoeff() - low).maxCoeff();
+    const double scale = extent > 0.0 ? 2097151.0 / extent : 0.0; // 2^21 - 1 steps
+    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        std::uint64_t key = 0;
+        for (int d = 0; d < 3; ++d) {
+            const auto q = static_cast<std::uint64_t>((P(i, d) - low[d]) * scale);
+            key |= spreadBits(q) << d;
+        }
+        keyed[static_cast<size_t>(i)] = {key, static_cast<int>(i)};
+    }
+    std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+        if (a.first != b.first) {
+            return a.first < b.first;
+        }
+        const auto pa = P.row(a.second), pb = P.row(b.second);
+        return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end());
+    });
+    std::vector<int> order(static_cast<size_t>(n));
+    for (size_t r = 0; r < order.size(); ++r) {
+        order[r] = keyed[r].second;
+    }
+    return order;
+}
+
 void requireSurface(const PointMatrix& P)
 {
     const Eigen::RowVector3d mean = P.colwise().mean();
@@ -214,6 +262,19 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
             " neighbours per point");
     }
     requireSurface(g.points);
+    {
+        const std::vector<int> order = spatialOrder(g.points);
+        PointMatrix sorted(g.points.rows(), 3);
+        std::vector<int> rowOf(order.size());
+        for (size_t r = 0; r < order.size(); ++r) {
+            sorted.row(static_cast<Eigen::Index>(r)) = g.points.row(order[r]);
+            rowOf[static_cast<size_t>(order[r])] = static_cast<int>(r);
+        }
+        g.points = std::move(sorted);
+        for (int& p : g.inputToPoint) {
+            p = rowOf[static_cast<size_t>(p)];
+        }
+    }
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
     g.spacing = meanSpacing(g.neighbours);

@@ -84,7 +84,9 @@ struct ExtractionCancelled : std::runtime_error
 /// and kept by a caller that recomputes with other options (the FreeCAD document object).
 struct CloudGeometry
 {
-    /// The distinct points (exact duplicates merged) and, per input point, its row here.
+    /// The distinct points (exact duplicates merged) in a canonical spatial order (Morton order
+    /// of their positions: neighbours lie in nearby rows, and the order, so every result, does
+    /// not depend on the input's order) and, per input point, its row here.
     PointMatrix points;
     std::vector<int> inputToPoint;
     Neighbourhoods neighbours;

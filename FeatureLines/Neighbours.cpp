@@ -339,7 +339,6 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
             }
         }
     }
-    result.order.assign(original.begin(), original.end());
     return result;
 }
 

@@ -22,19 +22,9 @@ struct Neighbourhoods
     IndexMatrix indices;
     /// D  #P by k squared Euclidean distances, matching `indices`.
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> squaredDistances;
-    /// The rows in an order in which consecutive points lie close together (the kd-tree's leaf
-    /// order), or empty for row order. Stages that treat each point on its own visit the rows
-    /// in this order: consecutive rows then share most of their neighbours, which stay in the
-    /// cache even when the cloud is stored in random order. No result depends on it.
-    std::vector<int> order;
 
     int k() const { return static_cast<int>(indices.cols()); }
     Eigen::Index size() const { return indices.rows(); }
-    /// The row visited r-th.
-    Eigen::Index visit(Eigen::Index r) const
-    {
-        return static_cast<Eigen::Index>(order.size()) == indices.rows() ? order[r] : r;
-    }
 };
 
 /// The k nearest other points of every point of P (exact search on a kd-tree).

@@ -103,8 +103,8 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
     result.normals.resize(n, 3);
     result.variation.resize(n);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index r = 0; r < n; ++r) {
-        fitNormal(P, N, N.visit(r), k, result.normals, &result.variation);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        fitNormal(P, N, i, k, result.normals, &result.variation);
     }
     return result;
 }

@@ -138,8 +138,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
 #pragma omp for schedule(static, 1)
         for (Eigen::Index b = 0; b < blocks; ++b) {
             std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
-            for (Eigen::Index r = b * block; r < std::min(n, (b + 1) * block); ++r) {
-                const Eigen::Index i = N.visit(r);
+            for (Eigen::Index i = b * block; i < std::min(n, (b + 1) * block); ++i) {
                 const Eigen::Vector3d normal = normals.row(i).transpose();
                 if (!(normal.norm() > 0.0) || !normal.allFinite()) {
                     continue;
@@ -210,8 +209,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
     for (Eigen::Index b = 0; b < blocks; ++b) {
         std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
         auto from = rings.begin();
-        for (Eigen::Index r = b * block; r < std::min(n, (b + 1) * block); ++r) {
-            const Eigen::Index i = N.visit(r);
+        for (Eigen::Index i = b * block; i < std::min(n, (b + 1) * block); ++i) {
             std::copy(from, from + counts[i], result.indices.begin() + result.offsets[i]);
             from += counts[i];
         }

@@ -59,8 +59,7 @@ Eigen::VectorXd averageOverNeighbours(const Eigen::VectorXd& values, const Neigh
 {
     Eigen::VectorXd averaged(values.size());
 #pragma omp parallel for schedule(static, 4096)
-    for (Eigen::Index r = 0; r < values.size(); ++r) {
-        const Eigen::Index i = N.visit(r);
+    for (Eigen::Index i = 0; i < values.size(); ++i) {
         double sum = values[i];
         for (int j = 0; j < N.k(); ++j) {
             sum += values[N.indices(i, j)];
@@ -375,97 +374,6 @@ Eigen::VectorXd regionCurvature(const PointMatrix& P, const NormalMatrix& normal
     }
     return options.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs());
 }
-
-/// A region's rows in a spatially coherent order (Neighbourhoods::order): its points and
-/// neighbourhoods copied with row r holding region point order[r]. The stages that treat each
-/// point on its own (smoothing, normals, 1-rings, curvature, averaging) run on the copy when the
-/// region is stored in random order: each point then finds its neighbours' rows in the cache.
-/// Every point sees the same coordinates in the same neighbour order, so the results, mapped
-/// back row by row, are the same.
-struct CoherentRows
-{
-    std::vector<int> order; // row r of the copy is region point order[r]
-    std::vector<int> rowOf; // region point i is row rowOf[i] of the copy
-
-    /// Used when the region's neighbours lie far apart in memory: on a sample of points the
-    /// nearest neighbour is more than a few pages of rows away for most of them.
-    static bool needed(const Neighbourhoods& N)
-    {
-        const Eigen::Index n = N.size();
-        if (static_cast<Eigen::Index>(N.order.size()) != n || n < 4096) {
-            return false;
-        }
-        const Eigen::Index stride = std::max<Eigen::Index>(1, n / 4096);
-        Eigen::Index far = 0, sampled = 0;
-        for (Eigen::Index i = 0; i < n; i += stride, ++sampled) {
-            far += std::abs(static_cast<Eigen::Index>(N.indices(i, 0)) - i) > 1024 ? 1 : 0;
-        }
-        return 2 * far > sampled;
-    }
-
-    explicit CoherentRows(const Neighbourhoods& N) : order(N.order), rowOf(N.order.size())
-    {
-        for (size_t r = 0; r < order.size(); ++r) {
-            rowOf[static_cast<size_t>(order[r])] = static_cast<int>(r);
-        }
-    }
-
-    template <class Matrix> Matrix rows(const Matrix& M) const
-    {
-        Matrix copy(M.rows(), M.cols());
-#pragma omp parallel for schedule(static, 4096)
-        for (Eigen::Index r = 0; r < M.rows(); ++r) {
-            copy.row(r) = M.row(order[static_cast<size_t>(r)]);
-        }
-        return copy;
-    }
-    template <class Matrix> Matrix back(const Matrix& M) const
-    {
-        Matrix original(M.rows(), M.cols());
-#pragma omp parallel for schedule(static, 4096)
-        for (Eigen::Index r = 0; r < M.rows(); ++r) {
-            original.row(order[static_cast<size_t>(r)]) = M.row(r);
-        }
-        return original;
-    }
-    Neighbourhoods neighbourhoods(const Neighbourhoods& N) const
-    {
-        Neighbourhoods copy;
-        copy.indices.resize(N.size(), N.k());
-        copy.squaredDistances = rows(N.squaredDistances);
-#pragma omp parallel for schedule(static, 4096)
-        for (Eigen::Index r = 0; r < N.size(); ++r) {
-            const Eigen::Index i = order[static_cast<size_t>(r)];
-            for (int j = 0; j < N.k(); ++j) {
-                copy.indices(r, j) = rowOf[static_cast<size_t>(N.indices(i, j))];
-            }
-        }
-        return copy;
-    }
-    RingNeighbourhoods back(const RingNeighbourhoods& ring) const
-    {
-        const size_t n = order.size();
-        RingNeighbourhoods original;
-        original.offsets.assign(n + 1, 0);
-        for (size_t r = 0; r < n; ++r) {
-            original.offsets[static_cast<size_t>(order[r]) + 1] =
-                ring.size(static_cast<Eigen::Index>(r));
-        }
-        for (size_t i = 0; i < n; ++i) {
-            original.offsets[i + 1] += original.offsets[i];
-        }
-        original.indices.resize(ring.indices.size());
-#pragma omp parallel for schedule(static, 4096)
-        for (long r = 0; r < static_cast<long>(n); ++r) {
-            int* to = original.indices.data() +
-                      original.offsets[static_cast<size_t>(order[static_cast<size_t>(r)])];
-            for (const int* q = ring.begin(r); q != ring.end(r); ++q) {
-                *to++ = order[static_cast<size_t>(*q)];
-            }
-        }
-        return original;
-    }
-};
 
 /// The curvature noise floor (x 1 / spacing) of a region with estimated noise `noise` (x
 /// spacing): a flat patch sampled as a scan (a jittered grid) with normal noise goes through
@@ -974,49 +882,17 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
     g.smoothed =
         options.smoothing == SmoothingMode::Always ||
         (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
-    // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
-    // cannot round them off. A region stored in random order is smoothed, and its 1-rings and
-    // curvature computed, on a copy in coherent order (the same values, much faster).
-    const int averaging = g.smoothed ? options.curvatureAveragingPasses : 0;
-    if (CoherentRows::needed(g.neighbours)) {
-        const CoherentRows coherent(g.neighbours);
-        const Neighbourhoods N2 = coherent.neighbourhoods(g.neighbours);
-        PointMatrix P2 = coherent.rows(g.points);
-        NormalMatrix normals2;
-        if (g.smoothed) {
-            P2 = laplacianSmooth(P2, N2, allIndices(P2.rows()), options.smoothingOptions);
-            normals2 = pcaNormals(P2, N2).normals;
-            g.points = coherent.back(P2);
-            g.normals = coherent.back(normals2);
-        } else {
-            normals2 = coherent.rows(g.normals);
-        }
-        g.ring = coherent.back(ringNeighbourhoods(P2, normals2, N2));
-        if (averaging == 0) {
-            g.curvature =
-                coherent.back(Eigen::VectorXd(meanCurvature(P2, normals2, N2, options.curvature)));
-        } else {
-            // The orientation walks the region in its own order.
-            CurvatureOptions signedOptions = options.curvature;
-            signedOptions.signedCurvature = true;
-            Eigen::VectorXd H = meanCurvature(
-                P2, coherent.rows(orientedNormals(g.normals, g.neighbours)), N2, signedOptions);
-            for (int pass = 0; pass < averaging; ++pass) {
-                H = averageOverNeighbours(H, N2);
-            }
-            g.curvature = coherent.back(
-                options.curvature.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs()));
-        }
-    } else {
-        if (g.smoothed) {
-            g.points = laplacianSmooth(g.points, g.neighbours, allIndices(g.points.rows()),
-                                       options.smoothingOptions);
-            g.normals = pcaNormals(g.points, g.neighbours).normals;
-        }
-        g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
-        g.curvature =
-            regionCurvature(g.points, g.normals, g.neighbours, averaging, options.curvature);
+    if (g.smoothed) {
+        // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
+        // cannot round them off.
+        g.points = laplacianSmooth(g.points, g.neighbours, allIndices(g.points.rows()),
+                                   options.smoothingOptions);
+        g.normals = pcaNormals(g.points, g.neighbours).normals;
     }
+    g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
+    g.curvature =
+        regionCurvature(g.points, g.normals, g.neighbours,
+                        g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
     g.curvatureNoise =
         curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / spacing;
     return g;

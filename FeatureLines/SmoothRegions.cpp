@@ -273,20 +273,6 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
     Neighbourhoods sub;
     sub.indices.resize(static_cast<Eigen::Index>(members.size()), k);
     sub.squaredDistances.resize(static_cast<Eigen::Index>(members.size()), k);
-    // The cloud's visiting order restricted to the region, when it holds a good part of the
-    // cloud (the restriction scans the whole order).
-    if (N.order.size() == region.size() && 8 * members.size() >= region.size()) {
-        sub.order.reserve(members.size());
-        for (int p : N.order) {
-            if (region[p] == regionId) {
-                sub.order.push_back(local(p));
-            }
-        }
-        if (sub.order.size() != members.size() ||
-            std::find(sub.order.begin(), sub.order.end(), -1) != sub.order.end()) {
-            sub.order.clear(); // the member list and the labels disagree: caught below
-        }
-    }
     bool isolated = false; // a member with no neighbour in the region
     bool unlisted = false; // a neighbour labelled regionId but not among the members
 #pragma omp parallel for schedule(static, 4096) reduction(|| : isolated, unlisted)

@@ -3,8 +3,10 @@
 // cube's fillet borders (Fig. 7 b), a plane, a sphere, an open sheet; and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -294,6 +296,57 @@ TEST(Extraction, DuplicatesAreMergedAndReportedPerInputPoint)
     ASSERT_EQ(r.region.size(), static_cast<size_t>(doubled.rows()));
     for (Eigen::Index i = 0; i < cube.points.rows(); ++i) {
         EXPECT_EQ(r.region[i], r.region[i + cube.points.rows()]);
+    }
+}
+
+// The cloud is put into a canonical spatial order first (CloudGeometry::points), so the order
+// of the input rows changes nothing: the same lines, junctions, regions and thresholds, and the
+// same values per point, on a cube (sharp edges, six regions) and a noisy rounded cube
+// (smoothing, two thresholds, patches), duplicates included.
+TEST(Extraction, TheInputOrderDoesNotChangeTheResult)
+{
+    shapes::Sample cube = shapes::cube(20.0, 0.5, 3);
+    shapes::addNormalNoise(cube, 0.3 * 0.5, 4);
+    shapes::Sample rounded = shapes::roundedCube(40.0, 6.0, 0.5, 5);
+    shapes::addNormalNoise(rounded, 0.3 * 0.5, 15);
+    for (const PointMatrix* cloud : {&cube.points, &rounded.points}) {
+        PointMatrix P(cloud->rows() + 100, 3);
+        P << *cloud, cloud->topRows(100);
+        std::vector<int> shuffled(static_cast<size_t>(P.rows()));
+        std::iota(shuffled.begin(), shuffled.end(), 0);
+        std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
+        PointMatrix Q(P.rows(), 3); // row r of Q is row shuffled[r] of P
+        for (Eigen::Index r = 0; r < Q.rows(); ++r) {
+            Q.row(r) = P.row(shuffled[static_cast<size_t>(r)]);
+        }
+        const ExtractionResult a = extractFeatureLines(P);
+        const ExtractionResult b = extractFeatureLines(Q);
+        ASSERT_GT(a.lines.size(), 0u);
+        ASSERT_EQ(a.lines.size(), b.lines.size());
+        for (size_t l = 0; l < a.lines.size(); ++l) {
+            EXPECT_EQ(a.lines[l].type, b.lines[l].type);
+            EXPECT_EQ(a.lines[l].closed, b.lines[l].closed);
+            EXPECT_EQ(a.lines[l].region, b.lines[l].region);
+            EXPECT_EQ(a.lines[l].startJunction, b.lines[l].startJunction);
+            EXPECT_EQ(a.lines[l].endJunction, b.lines[l].endJunction);
+            EXPECT_TRUE(a.lines[l].points == b.lines[l].points) << "line " << l;
+        }
+        EXPECT_TRUE(a.junctions == b.junctions);
+        EXPECT_EQ(a.spacing, b.spacing);
+        ASSERT_EQ(a.regions.size(), b.regions.size());
+        for (size_t g = 0; g < a.regions.size(); ++g) {
+            EXPECT_EQ(a.regions[g].points, b.regions[g].points);
+            EXPECT_EQ(a.regions[g].thresholds, b.regions[g].thresholds);
+        }
+        for (Eigen::Index r = 0; r < Q.rows(); ++r) {
+            const size_t i = static_cast<size_t>(shuffled[static_cast<size_t>(r)]);
+            const size_t j = static_cast<size_t>(r);
+            ASSERT_EQ(a.region[i], b.region[j]);
+            ASSERT_EQ(a.patch[i], b.patch[j]);
+            ASSERT_EQ(a.label[i], b.label[j]);
+            ASSERT_TRUE(a.curvature[i] == b.curvature[j] ||
+                        (std::isnan(a.curvature[i]) && std::isnan(b.curvature[j])));
+        }
     }
 }
 
