@@ -354,6 +354,8 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
         rr.points = static_cast<int>(g.members.size());
         rr.noise = g.noise;
         rr.smoothed = g.smoothed;
+        rr.curvatureScale = g.curvatureScale;
+        rr.scaleTrials = g.scaleTrials;
         rr.thresholds = regionThresholdList(g, options, rr);
         if (!rr.decisions.empty()) {
             // The automatic search starts with this very search, on all the region's values.

@@ -105,6 +105,11 @@ struct RegionReport
     int points = 0;
     double noise = 0.0;
     bool smoothed = false;
+    /// The scale the curvature was computed at, x spacing (RegionGeometry::curvatureScale).
+    double curvatureScale = 1.0;
+    /// Every scale weighed (RegionGeometry::scaleTrials); empty when only the cloud's own
+    /// sampling was looked at.
+    std::vector<RegionGeometry::ScaleTrial> scaleTrials;
     /// The thresholds applied, high to low, and the curvature histogram the first search ran
     /// on (what a user interface draws).
     std::vector<double> thresholds;

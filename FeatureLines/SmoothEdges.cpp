@@ -9,6 +9,7 @@
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <queue>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
+#include "FeatureLines/Boundary.h"
+#include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
 #include "FeatureLines/SmoothRegions.h"
 
@@ -29,6 +32,16 @@ std::vector<int> allIndices(Eigen::Index n)
     std::vector<int> all(static_cast<size_t>(n));
     std::iota(all.begin(), all.end(), 0);
     return all;
+}
+
+/// The smallest piece of one level that counts as a patch, in the region's points: a patch's
+/// worth of the samples the curvature was computed on (AutomaticThresholdOptions::
+/// minInnerPoints), which at a coarser scale each stand for curvatureScale^2 of the region's.
+int minIslandPoints(const RegionGeometry& region, const SmoothEdgeOptions& options)
+{
+    const int inner = options.automatic.minInnerPoints > 0 ? options.automatic.minInnerPoints
+                                                           : 2 * region.neighbours.k();
+    return static_cast<int>(std::lround(inner * region.curvatureScale * region.curvatureScale));
 }
 
 ThresholdOptions histogramOptions(const RegionGeometry& region, const SmoothEdgeOptions& options)
@@ -175,15 +188,16 @@ double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& lab
 }
 
 /// The curvature with the noise islands of threshold tau levelled: connected pieces (over the
-/// 1-rings) of points above tau whose 90th percentile stays below tau + margin are set to tau
-/// (low), pieces at or below tau whose 10th percentile stays above tau - margin are set just
-/// above it (high). Only the points of `points` are looked at.
+/// 1-rings) of points above tau whose 90th percentile stays below tau + margin, or that hold
+/// fewer than minPoints points, are set to tau (low); pieces at or below tau whose 10th
+/// percentile stays above tau - margin, or that hold fewer than minPoints, are set just above
+/// it (high). Only the points of `points` are looked at.
 Eigen::VectorXd withoutNoiseIslands(const Eigen::VectorXd& curvature, double tau,
                                     const RingNeighbourhoods& ring, const std::vector<int>& points,
-                                    double margin)
+                                    double margin, int minPoints)
 {
     Eigen::VectorXd result = curvature;
-    if (!(margin > 0.0)) {
+    if (!(margin > 0.0) && minPoints <= 1) {
         return result;
     }
     const Eigen::Index n = curvature.size();
@@ -223,7 +237,8 @@ Eigen::VectorXd withoutNoiseIslands(const Eigen::VectorXd& curvature, double tau
         std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at),
                          values.end());
         const double extreme = values[at];
-        if (high ? extreme < tau + margin : extreme > tau - margin) {
+        if (static_cast<int>(piece.size()) < minPoints ||
+            (margin > 0.0 && (high ? extreme < tau + margin : extreme > tau - margin))) {
             for (int p : piece) {
                 result[p] = high ? tau : above;
             }
@@ -451,6 +466,159 @@ double curvatureNoiseFloor(double noise, int k, bool smoothed, const SmoothEdgeO
         cache[key] = perNoise;
     }
     return noise * perNoise;
+}
+
+/// The curvature of a coarse region near its rim replaced by the values of its interior. At the
+/// rim the fit and the smoothing see one side only, and their bias (the curvature of a
+/// cylinder rises by half within a few spacings of a cut) spreads over a few coarse spacings,
+/// a band many fine spacings wide that the sharp lines' band (SmoothRegionOptions::bandWidth)
+/// no longer covers: its values would form a level of their own along every sharp edge. The
+/// points within `width` (length unit, along the neighbourhoods) of a rim point (an empty
+/// sector in its neighbourhood, boundaryPoints) take, from the innermost outwards, the mean of
+/// their neighbours' values that are known: a fillet running into a sharp edge keeps its
+/// level up to the edge. A region that is all rim keeps its values.
+void fillRimFromInterior(RegionGeometry& g, double width)
+{
+    const Eigen::Index n = g.points.rows();
+    const Neighbourhoods& N = g.neighbours;
+    const std::vector<char> rim = boundaryPoints(g.points, g.normals, N);
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    // Distance from the rim along the neighbourhood graph (Dijkstra from every rim point),
+    // within the width.
+    std::vector<double> distance(static_cast<size_t>(n), infinity);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (rim[static_cast<size_t>(i)]) {
+            distance[static_cast<size_t>(i)] = 0.0;
+            queue.push({0.0, static_cast<int>(i)});
+        }
+    }
+    std::vector<int> band;
+    while (!queue.empty()) {
+        const auto [d, p] = queue.top();
+        queue.pop();
+        if (d > distance[static_cast<size_t>(p)]) {
+            continue;
+        }
+        band.push_back(p);
+        for (int j = 0; j < N.k(); ++j) {
+            const int q = N.indices(p, j);
+            const double dq = d + std::sqrt(N.squaredDistances(p, j));
+            if (dq < width && dq < distance[static_cast<size_t>(q)]) {
+                distance[static_cast<size_t>(q)] = dq;
+                queue.push({dq, q});
+            }
+        }
+    }
+    if (band.size() == static_cast<size_t>(n)) {
+        return;
+    }
+    // Innermost first: each takes what its neighbours farther in already hold.
+    std::vector<char> known(static_cast<size_t>(n), 1);
+    for (int p : band) {
+        known[static_cast<size_t>(p)] = 0;
+    }
+    for (auto it = band.rbegin(); it != band.rend(); ++it) {
+        const int p = *it;
+        double sum = 0.0;
+        int count = 0;
+        for (int j = 0; j < N.k(); ++j) {
+            const int q = N.indices(p, j);
+            if (known[static_cast<size_t>(q)]) {
+                sum += g.curvature[q];
+                ++count;
+            }
+        }
+        if (count > 0) {
+            g.curvature[p] = sum / count;
+            known[static_cast<size_t>(p)] = 1;
+        }
+    }
+}
+
+/// Beyond the paper: the scale of a region's curvature. At the cloud's own sampling a fillet of
+/// radius r stands minSeparation noise floors above a flat face only while r stays under
+/// 1 / (2 minSeparation floor); when that radius is smaller than the region itself, larger
+/// fillets could hide in the noise, and the region is averaged onto coarser grids (2, 4, ...
+/// spacings, CurvatureScaleOptions) until the radius covers the region or too few cells are
+/// left. At each scale the automatic rule weighs the region's thresholds on the coarse
+/// geometry; the scale with the most accepted thresholds wins, the finer one on a tie (it
+/// resolves smaller fillets and places the lines more closely). Its curvature is carried back
+/// to the region's points, where the labels, clusters and lines are drawn as at scale 1.
+void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members, RegionGeometry& g,
+                          const SmoothEdgeOptions& options)
+{
+    const CurvatureScaleOptions& so = options.scales;
+    if (!(so.maxScale >= 2.0) || !(g.curvatureNoise > 0.0)) {
+        return;
+    }
+    const double minSeparation = std::max(options.automatic.minSeparation, 1.0);
+    const auto largestRadius = [&](double floor) { return 1.0 / (2.0 * minSeparation * floor); };
+    const Eigen::Index m = g.points.rows();
+    PointMatrix raw(m, 3);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        raw.row(i) = P.row(members[static_cast<size_t>(i)]);
+    }
+    const double extent = 0.5 * (raw.colwise().maxCoeff() - raw.colwise().minCoeff()).norm();
+    if (largestRadius(g.curvatureNoise) >= extent) {
+        return;
+    }
+    SmoothEdgeOptions coarseOptions = options;
+    coarseOptions.scales.maxScale = 1.0;
+    // The grid's averaging has already taken most of the noise; averaging the curvature
+    // too would blur each transition over two more coarse neighbourhoods, and carry the mean
+    // curvature through zero between a concave fillet and the convex face it meets (a band
+    // that looks like a flat patch of its own).
+    coarseOptions.curvatureAveragingPasses = 0;
+    const auto weigh = [&](const RegionGeometry& r) {
+        RegionGeometry::ScaleTrial trial;
+        trial.scale = r.spacing / g.spacing;
+        trial.points = static_cast<int>(r.points.rows());
+        trial.noise = r.noise;
+        for (const ThresholdDecision& d : automaticThresholds(r, coarseOptions)) {
+            trial.acceptedThresholds += d.accepted ? 1 : 0;
+        }
+        return trial;
+    };
+    g.scaleTrials.push_back(weigh(g));
+    int best = g.scaleTrials.back().acceptedThresholds;
+    std::shared_ptr<RegionGeometry> chosen;
+    GridCentroids chosenGrid;
+    Neighbourhoods chosenNeighbours;
+    for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
+        GridCentroids grid = gridCentroids(raw, s * g.spacing);
+        const Eigen::Index cells = grid.points.rows();
+        if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
+            break;
+        }
+        NeighbourOptions no;
+        no.k = g.neighbours.k();
+        Neighbourhoods cn = nearestNeighbours(grid.points, no);
+        const double coarseSpacing = meanSpacing(cn);
+        auto coarse = std::make_shared<RegionGeometry>(
+            analyseRegion(grid.points, cn, std::vector<int>(static_cast<size_t>(cells), g.region),
+                          allIndices(cells), g.region, coarseSpacing, coarseOptions));
+        fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
+        g.scaleTrials.push_back(weigh(*coarse));
+        if (g.scaleTrials.back().acceptedThresholds > best) {
+            best = g.scaleTrials.back().acceptedThresholds;
+            chosen = coarse;
+            chosenGrid = std::move(grid);
+            chosenNeighbours = std::move(cn);
+        }
+        if (largestRadius(coarse->curvatureNoise) >= extent) {
+            break;
+        }
+    }
+    if (!chosen) {
+        return;
+    }
+    g.curvatureScale = chosen->spacing / g.spacing;
+    g.curvatureNoise = chosen->curvatureNoise;
+    g.curvature = valuesAtPoints(raw, chosenGrid, chosenNeighbours, chosen->curvature,
+                                 so.carryWidth * chosen->spacing);
+    g.coarse = std::move(chosen);
 }
 
 /// Direction of a line at one end (pointing out of the line), from the end vertex and the
@@ -895,6 +1063,7 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                         g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
     g.curvatureNoise =
         curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / spacing;
+    chooseCurvatureScale(P, members, g, options);
     return g;
 }
 
@@ -936,9 +1105,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     level.threshold = threshold;
     // Islands of one side whose values stay within a few noise floors of tau are noise of
     // the level around them, not patches: they join that level before the labels are drawn.
-    const Eigen::VectorXd curvature =
-        withoutNoiseIslands(region.curvature, threshold, region.ring, points,
-                            options.islandMargin * region.curvatureNoise);
+    const Eigen::VectorXd curvature = withoutNoiseIslands(
+        region.curvature, threshold, region.ring, points,
+        options.islandMargin * region.curvatureNoise, minIslandPoints(region, options));
     level.labels = labelPoints(curvature, threshold, region.ring, points, options.labels);
     level.clusters = growLabelClusters(level.labels, region.ring, points, options.seed);
 
@@ -1014,6 +1183,11 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
 std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options)
 {
+    if (region.coarse) {
+        // Decided at the region's curvature scale, where its patches and reaches are counted
+        // in its own sampling; the values are the region's carried-back curvature's.
+        return automaticThresholds(*region.coarse, options);
+    }
     const AutomaticThresholdOptions& a = options.automatic;
     if (a.maxThresholds < 0 || a.maxSearches < 0 || a.maxMisses < 0 || a.minRatio < 1.0 ||
         a.minInnerPoints < 0 || a.minContrast < 1.0 || !(a.flatRadius > 0.0) ||

@@ -6,10 +6,12 @@
 // inside one large cluster (Sec. 4, Fig. 13 e).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "FeatureLines/ClusterGraph.h"
 #include "FeatureLines/Curvature.h"
+#include "FeatureLines/CurvatureScale.h"
 #include "FeatureLines/HistogramThreshold.h"
 #include "FeatureLines/PointLabels.h"
 #include "FeatureLines/RingNeighbourhood.h"
@@ -157,6 +159,7 @@ struct SmoothEdgeOptions
     /// radii, leaves about half of it across the line; the edge of a noise island, or a
     /// curvature that only drifts through tau, leaves about one floor.
     double minLineContrast = 2.0;
+
     /// Sec. 3: "small clusters" are the clusters of at most this many points (the single
     /// points met at a label change).
     int maxCandidateClusterSize = 1;
@@ -180,6 +183,8 @@ struct SmoothEdgeOptions
     /// near an end, so anything ahead counts.
     double anchorAngle = 90.0;
     AutomaticThresholdOptions automatic;
+    /// The scale of the curvature (CurvatureScaleOptions, RegionGeometry::curvatureScale).
+    CurvatureScaleOptions scales;
     /// Seed of the random choice of growing seeds (Sec. 3).
     unsigned seed = 1;
 };
@@ -203,6 +208,26 @@ struct RegionGeometry
     /// flat face of this region's noise shows after the region's smoothing, fit and averaging.
     double curvatureNoise = 0.0;
     double spacing = 0.0;
+    /// The spacing of the sampling the curvature was computed at, x spacing: 1, or the
+    /// coarser scale chosen for the region (see analyseRegion). Lengths that depend on the fit
+    /// (the flat radius, the reach of the contrast and straddle tests) scale with it.
+    double curvatureScale = 1.0;
+
+    /// At a coarser scale: the region averaged onto that scale's grid, with its own smoothing,
+    /// 1-rings, curvature and noise floor. The automatic thresholds are decided on it (its
+    /// patches and reaches are in its own sampling); the curvature above is its curvature
+    /// carried back to the region's points, on which the lines are drawn. Null at scale 1.
+    std::shared_ptr<const RegionGeometry> coarse;
+    /// Every scale weighed for the region: its spacing (x the region's), its number of points
+    /// and the thresholds the automatic rule accepts there.
+    struct ScaleTrial
+    {
+        double scale = 1.0;
+        int points = 0;
+        double noise = 0.0;
+        int acceptedThresholds = 0;
+    };
+    std::vector<ScaleTrial> scaleTrials;
 };
 
 /// Builds a region's geometry from the cloud's.

@@ -188,7 +188,8 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
         }
         tooFewInside[i] = inside < options.minRegionNeighbours;
     }
-    const bool removed = std::find(tooFewInside.begin(), tooFewInside.end(), 1) != tooFewInside.end();
+    const bool removed =
+        std::find(tooFewInside.begin(), tooFewInside.end(), 1) != tooFewInside.end();
     for (Eigen::Index i = 0; i < n; ++i) {
         eligible[i] = eligible[i] && !tooFewInside[i];
     }

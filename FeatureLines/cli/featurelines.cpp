@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <exception>
 #include <fstream>
-#include <iostream>
 #include <iomanip>
+#include <iostream>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -310,11 +310,13 @@ ExtractionOptions extractionOptions(const Arguments& a)
     o.sharpEdges = !a.has("--no-sharp");
     o.smoothEdges = !a.has("--no-smooth");
     o.sharp.includeBoundary = !a.has("--no-boundary");
-    o.smooth.smoothing = static_cast<SmoothingMode>(
-        choice(a, "--smoothing", {"automatic", "always", "never"}, 0));
-    o.smooth.smoothingOptions.iterations = static_cast<int>(
-        a.integer("--smooth", o.smooth.smoothingOptions.iterations, 0, 1000));
-    o.smooth.histogram.bins = static_cast<int>(a.integer("--bins", o.smooth.histogram.bins, 2, 1000000));
+    o.smooth.smoothing =
+        static_cast<SmoothingMode>(choice(a, "--smoothing", {"automatic", "always", "never"}, 0));
+    o.smooth.smoothingOptions.iterations =
+        static_cast<int>(a.integer("--smooth", o.smooth.smoothingOptions.iterations, 0, 1000));
+    o.smooth.histogram.bins =
+        static_cast<int>(a.integer("--bins", o.smooth.histogram.bins, 2, 1000000));
+    o.smooth.scales.maxScale = a.number("--max-scale", o.smooth.scales.maxScale, 1.0, 1000.0, true);
     if (a.has("--outliers")) {
         o.smooth.histogram.outlierPercent = a.number("--outliers", 0.0, 0.0, 100.0, false);
     }
@@ -326,8 +328,7 @@ ExtractionOptions extractionOptions(const Arguments& a)
         }
         o.thresholdMode = ThresholdMode::Explicit;
         o.thresholds = thresholdList(a.text("--thresholds"));
-    }
-    else if (o.thresholdMode == ThresholdMode::Explicit) {
+    } else if (o.thresholdMode == ThresholdMode::Explicit) {
         throw UsageError("--threshold-mode explicit needs --thresholds T1,T2,...");
     }
     return o;
@@ -379,7 +380,21 @@ int runExtract(const Arguments& a)
             .add("points", number(static_cast<long>(rr.points)))
             .add("noise", number(rr.noise))
             .add("smoothed", rr.smoothed ? "true" : "false")
-            .add("thresholds", array(rr.thresholds));
+            .add("curvature_scale", number(rr.curvatureScale));
+        if (!rr.scaleTrials.empty()) {
+            std::string trials = "[";
+            for (std::size_t t = 0; t < rr.scaleTrials.size(); ++t) {
+                const RegionGeometry::ScaleTrial& st = rr.scaleTrials[t];
+                Object trial;
+                trial.add("scale", number(st.scale))
+                    .add("points", number(static_cast<long>(st.points)))
+                    .add("noise", number(st.noise))
+                    .add("accepted_thresholds", number(static_cast<long>(st.acceptedThresholds)));
+                trials += (t ? ", " : "") + trial.str();
+            }
+            region.add("scale_trials", trials + "]");
+        }
+        region.add("thresholds", array(rr.thresholds));
         regions += (i ? ", " : "") + region.str();
     }
     regions += "]";
@@ -403,8 +418,8 @@ int runExtract(const Arguments& a)
                   "255 outside every region)\n"
                << std::setprecision(9);
         for (std::size_t i = 0; i < r.region.size(); ++i) {
-            labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i])
-                   << ' ' << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
+            labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i]) << ' '
+                   << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
         }
         if (!labels) {
             throw std::invalid_argument(file + ": writing the file failed");
@@ -419,7 +434,8 @@ int runExtract(const Arguments& a)
               << r.countLines(LineType::Boundary) << "), closed " << closed << ", junctions "
               << r.junctions.rows() << ", regions " << r.regions.size() << "\n";
     if (r.lines.empty()) {
-        std::cout << "no feature lines: the cloud has no sharp edge, boundary or curvature valley\n";
+        std::cout
+            << "no feature lines: the cloud has no sharp edge, boundary or curvature valley\n";
     }
     return 0;
 }
@@ -467,8 +483,9 @@ const std::vector<Command>& commands()
          "closed feature lines: sharp edges, smooth edges (fillet borders) and boundary",
          "INPUT -o LINES.json [--labels FILE] [--thresholds T1,T2 | --threshold-mode M] "
          "[--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N]",
-         {{"--output", "FILE", "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
-                               "\"points\"}], \"junctions\", \"regions\" (thresholds used)}",
+         {{"--output", "FILE",
+           "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
+           "\"points\"}], \"junctions\", \"regions\" (thresholds used)}",
            "-o"},
           {"--labels", "FILE",
            "also write per input point: smooth region, patch, Sec. 3 label, curvature"},
@@ -482,6 +499,9 @@ const std::vector<Command>& commands()
           {"--bins", "L", "start resolution L_start, 2 to 1000000 (default 50, Sec. 2.2)"},
           {"--outliers", "PCT",
            "drop this percentage of the highest curvatures (default: 1 in noisy regions, else 0)"},
+          {"--max-scale", "S",
+           "coarsest scale of the curvature, x spacing, 1 to 1000 (default 8; 1: the cloud's "
+           "own sampling only)"},
           {"--no-sharp", "", "no sharp edges (the whole cloud is one smooth region)"},
           {"--no-smooth", "", "no smooth edges"},
           {"--no-boundary", "", "no boundary lines of an open cloud"},

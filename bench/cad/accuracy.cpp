@@ -35,10 +35,14 @@ using namespace featurelines::bench;
 namespace {
 
 // ---------------------------------------------------------------------------------------------
-// The project's extraction with its default options, on the cloud only, as a user runs it.
+// The project's extraction with its default options, on the cloud only, as a user runs it
+// (--max-scale changes the one option a robustness run may set).
+featurelines::ExtractionOptions extractionOptions;
+
 std::optional<std::vector<TypedPolyline>> runFeatureLines(const PointMatrix& cloud)
 {
-    const featurelines::ExtractionResult result = featurelines::extractFeatureLines(cloud);
+    const featurelines::ExtractionResult result =
+        featurelines::extractFeatureLines(cloud, extractionOptions);
     std::vector<TypedPolyline> lines;
     for (const featurelines::FeatureLine& l : result.lines) {
         TypedPolyline t;
@@ -104,7 +108,9 @@ const char* usage =
     "  --demo-cloud FILE       write the demo cloud (boss_blend, clean, 6 digits) to FILE\n"
     "  --demo-points N         points of the demo cloud (default 40000)\n"
     "  --markdown              print tables as Markdown\n"
-    "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n";
+    "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n"
+    "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
+    "                          (default 8; 1: the cloud's own sampling only)\n";
 
 double parseNumber(const std::string& text, const std::string& option)
 {
@@ -165,6 +171,8 @@ Arguments parseArguments(int argc, char** argv)
             a.markdown = true;
         } else if (opt == "--no-baselines") {
             a.baselines = false;
+        } else if (opt == "--max-scale") {
+            extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
         } else if (opt == "--help" || opt == "-h") {
             std::cout << usage;
             std::exit(0);

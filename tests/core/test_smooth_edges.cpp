@@ -235,6 +235,30 @@ TEST(SmoothEdges, LevelsCloserThanFourNoiseFloorsAreOne)
     }
 }
 
+TEST(SmoothEdges, IslandsSmallerThanAPatchOfTheCurvaturesScaleAreLevelled)
+{
+    // A disc of radius 12 spacings at level 0.2 in a plane, and beside it one of radius 5
+    // (about 90 points). With the curvature computed three spacings coarse, a patch needs a
+    // patch's worth of those samples (2 k = 32 of them, 9 points each): at a threshold between
+    // the levels the large disc gets its closed loop, the small one is noise of that scale.
+    RegionGeometry g = latticeRegion(80, 60, [](double x, double y) {
+        const double disc = std::hypot(x - 25.0, y - 26.0) < 12.0 ? 0.2 : 0.0;
+        const double speck = std::hypot(x - 60.0, y - 26.0) < 5.0 ? 0.2 : 0.0;
+        return disc + speck;
+    });
+    g.curvatureScale = 3.0;
+    const SmoothEdgeLevel level = smoothEdgesAtThreshold(g, 0.1);
+    ASSERT_EQ(level.network.lines.size(), 1u);
+    const Polyline& loop = level.network.lines[0];
+    EXPECT_TRUE(loop.closed);
+    for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
+        EXPECT_NEAR(std::hypot(loop.points(i, 0) - 25.0, loop.points(i, 1) - 26.0), 12.0, 2.0);
+    }
+    // At the cloud's own scale the small disc is a patch too.
+    g.curvatureScale = 1.0;
+    EXPECT_EQ(smoothEdgesAtThreshold(g, 0.1).network.lines.size(), 2u);
+}
+
 TEST(SmoothEdges, FreeEndsAreAnchoredOnTheLineAheadOnly)
 {
     LineNetwork network;

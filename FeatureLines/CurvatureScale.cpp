@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/CurvatureScale.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+
+namespace featurelines {
+
+namespace {
+
+constexpr int bitsPerAxis = 21;
+
+/// The 21 low bits of x spread to every third bit (bit i to bit 3 i).
+std::uint64_t spreadBits(std::uint64_t x)
+{
+    x &= 0x1FFFFFULL;
+    x = (x | x << 32) & 0x1F00000000FFFFULL;
+    x = (x | x << 16) & 0x1F0000FF0000FFULL;
+    x = (x | x << 8) & 0x100F00F00F00F00FULL;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+}
+
+} // namespace
+
+GridCentroids gridCentroids(const PointMatrix& P, double cell)
+{
+    if (!(cell > 0.0) || !std::isfinite(cell)) {
+        throw std::invalid_argument("grid centroids: the cell size must be a positive number");
+    }
+    const Eigen::Index n = P.rows();
+    if (n == 0) {
+        throw std::invalid_argument("grid centroids: no points");
+    }
+    const Eigen::RowVector3d low = P.colwise().minCoeff();
+    const Eigen::RowVector3d cells = ((P.colwise().maxCoeff() - low) / cell).array().floor();
+    if (!(cells.maxCoeff() < static_cast<double>(1 << bitsPerAxis))) {
+        throw std::invalid_argument("grid centroids: the cloud spans too many cells");
+    }
+    // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
+    // the cells along the Z curve. The point index breaks ties, so the result is deterministic.
+    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        std::uint64_t key = 0;
+        for (int d = 0; d < 3; ++d) {
+            const auto c = static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
+            key |= spreadBits(c) << d;
+        }
+        keyed[static_cast<size_t>(i)] = {key, static_cast<int>(i)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+
+    GridCentroids grid;
+    grid.cellOf.resize(static_cast<size_t>(n));
+    std::vector<Eigen::RowVector3d> sums;
+    std::vector<int> counts;
+    for (size_t j = 0; j < keyed.size(); ++j) {
+        if (j == 0 || keyed[j].first != keyed[j - 1].first) {
+            sums.emplace_back(Eigen::RowVector3d::Zero());
+            counts.push_back(0);
+        }
+        const int i = keyed[j].second;
+        sums.back() += P.row(i);
+        ++counts.back();
+        grid.cellOf[static_cast<size_t>(i)] = static_cast<int>(sums.size()) - 1;
+    }
+    grid.points.resize(static_cast<Eigen::Index>(sums.size()), 3);
+    for (size_t c = 0; c < sums.size(); ++c) {
+        grid.points.row(static_cast<Eigen::Index>(c)) = sums[c] / counts[c];
+    }
+    return grid;
+}
+
+Eigen::VectorXd valuesAtPoints(const PointMatrix& P, const GridCentroids& grid,
+                               const Neighbourhoods& N, const Eigen::VectorXd& values, double width)
+{
+    const Eigen::Index n = P.rows();
+    if (static_cast<Eigen::Index>(grid.cellOf.size()) != n || N.size() != grid.points.rows() ||
+        values.size() != grid.points.rows()) {
+        throw std::invalid_argument("valuesAtPoints: the points, cells and values do not match");
+    }
+    if (!(width > 0.0)) {
+        throw std::invalid_argument("valuesAtPoints: the width must be positive");
+    }
+    const double scale = -0.5 / (width * width);
+    Eigen::VectorXd result(n);
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const int c = grid.cellOf[static_cast<size_t>(i)];
+        double weight = std::exp(scale * (grid.points.row(c) - P.row(i)).squaredNorm());
+        double sum = weight * values[c];
+        for (int j = 0; j < N.k(); ++j) {
+            const int q = N.indices(c, j);
+            const double w = std::exp(scale * (grid.points.row(q) - P.row(i)).squaredNorm());
+            weight += w;
+            sum += w * values[q];
+        }
+        // The cell's own centroid lies within a cell of p, so the weights never all vanish
+        // unless the width is far below the cell; then p keeps its cell's value.
+        result[i] = weight > 0.0 ? sum / weight : values[c];
+    }
+    return result;
+}
+
+} // namespace featurelines
