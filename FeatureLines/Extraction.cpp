@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <exception>
 #include <numeric>
+#include <vector>
 
 #include "FeatureLines/CloudIO.h"
 
@@ -33,6 +34,51 @@ std::uint64_t spreadBits(std::uint64_t v)
     v = (v | v << 4) & 0x10C30C30C30C30C3ULL;
     v = (v | v << 2) & 0x1249249249249249ULL;
     return v;
+}
+
+/// Sorts `keyed` by key, then each run of equal keys by `less`: a radix sort, 11 bits of the
+/// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
+/// points), passes in which every key has the same digit skipped.
+template <class Less>
+void sortByKey(std::vector<std::pair<std::uint64_t, int>>& keyed, const Less& less)
+{
+    constexpr int bits = 11, passes = 6; // 66 bits cover the 63 of the key
+    constexpr std::size_t buckets = std::size_t(1) << bits;
+    const std::size_t n = keyed.size();
+    std::vector<std::size_t> count(passes * buckets, 0);
+    for (const auto& item : keyed) {
+        for (int p = 0; p < passes; ++p) {
+            ++count[p * buckets + ((item.first >> (bits * p)) & (buckets - 1))];
+        }
+    }
+    std::vector<std::pair<std::uint64_t, int>> other(n);
+    for (int p = 0; p < passes && n > 0; ++p) {
+        std::size_t* start = count.data() + p * buckets;
+        if (start[(keyed[0].first >> (bits * p)) & (buckets - 1)] == n) {
+            continue; // one digit for all: the order stays
+        }
+        std::size_t at = 0;
+        for (std::size_t b = 0; b < buckets; ++b) {
+            const std::size_t c = start[b];
+            start[b] = at;
+            at += c;
+        }
+        for (const auto& item : keyed) {
+            other[start[(item.first >> (bits * p)) & (buckets - 1)]++] = item;
+        }
+        keyed.swap(other);
+    }
+    for (std::size_t first = 0; first < n;) {
+        std::size_t last = first + 1;
+        while (last < n && keyed[last].first == keyed[first].first) {
+            ++last;
+        }
+        if (last - first > 1) {
+            std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(first),
+                      keyed.begin() + static_cast<std::ptrdiff_t>(last), less);
+        }
+        first = last;
+    }
 }
 
 /// The distinct points of P in one canonical spatial order, and per input row its distinct
@@ -69,7 +115,7 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
         const auto pa = P.row(a.second), pb = P.row(b.second);
         return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end());
     };
-    std::sort(keyed.begin(), keyed.end(), less);
+    sortByKey(keyed, less);
     inputToPoint.resize(static_cast<size_t>(n));
     std::vector<int> firstOf; // distinct point -> an input row holding it
     firstOf.reserve(static_cast<size_t>(n));
