@@ -1,20 +1,17 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/Curvature.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <omp.h>
 
 namespace featurelines {
 
 namespace {
-
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 /// The quadric has six coefficients: at least five neighbours and the point itself.
 constexpr int minimumNeighbours = 5;
@@ -28,6 +25,60 @@ constexpr double degeneratePivot = 1e-12;
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
+}
+
+/// Solves the normal equations M c = r of the quadric fit, M symmetric positive definite with
+/// its upper triangle packed row by row in m (21 entries), by a Cholesky factorisation without
+/// pivoting, unrolled for the fixed size (Eigen's LLT of a 6 x 6 matrix goes through two calls
+/// and loops of run-time length, a fifth of the fit's time). Returns false when the fit is
+/// degenerate: a squared pivot not above degeneratePivot times the largest diagonal entry.
+bool solveNormalEquations(const double (&m)[21], const double (&r)[6], double (&c)[6])
+{
+    double M[6][6]; // lower triangle
+    double largest = 0.0;
+    for (int a = 0, entry = 0; a < 6; ++a) {
+        for (int b = a; b < 6; ++b) {
+            M[b][a] = m[entry++];
+        }
+        largest = std::max(largest, M[a][a]);
+    }
+    const double smallest = degeneratePivot * largest;
+    double L[6][6];
+    double inverse[6]; // 1 / L[j][j]
+    for (int j = 0; j < 6; ++j) {
+        double pivot = M[j][j];
+        for (int p = 0; p < j; ++p) {
+            pivot -= L[j][p] * L[j][p];
+        }
+        if (!(pivot > smallest)) {
+            return false;
+        }
+        L[j][j] = std::sqrt(pivot);
+        inverse[j] = 1.0 / L[j][j];
+        for (int i = j + 1; i < 6; ++i) {
+            double sum = M[i][j];
+            for (int p = 0; p < j; ++p) {
+                sum -= L[i][p] * L[j][p];
+            }
+            L[i][j] = sum * inverse[j];
+        }
+    }
+    double y[6];
+    for (int i = 0; i < 6; ++i) {
+        double sum = r[i];
+        for (int p = 0; p < i; ++p) {
+            sum -= L[i][p] * y[p];
+        }
+        y[i] = sum * inverse[i];
+    }
+    for (int i = 5; i >= 0; --i) {
+        double sum = y[i];
+        for (int p = i + 1; p < 6; ++p) {
+            sum -= L[p][i] * c[p];
+        }
+        c[i] = sum * inverse[i];
+    }
+    return true;
 }
 
 } // namespace
@@ -63,54 +114,56 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
             H(i) = 0.0;
             continue;
         }
-        const Eigen::Vector3d w = normal / length;
-        const Eigen::Vector3d u = w.unitOrthogonal();
-        const Eigen::Vector3d v = w.cross(u);
+        // The axes carry the factor 1 / radius: the coordinates below come out divided by it.
         const double scale = 1.0 / radius;
+        const Eigen::Vector3d w = normal / length;
+        const Eigen::Vector3d u0 = w.unitOrthogonal();
+        const Eigen::Vector3d u = u0 * scale;
+        const Eigen::Vector3d v = w.cross(u0) * scale;
+        const Eigen::Vector3d ws = w * scale;
 
         // Normal equations A^T A c = A^T z of the rows (x^2, xy, y^2, x, y, 1); the point
-        // itself is the row (0, 0, 0, 0, 0, 1) with z = 0. The 21 distinct products of the
-        // symmetric A^T A are summed by hand (Eigen's rankUpdate is not inlined).
-        double m[21] = {};
+        // itself is the row (0, 0, 0, 0, 0, 1) with z = 0. The 21 entries of the symmetric
+        // A^T A are sums of the 15 monomials x^i y^j, i + j <= 4 (x^2 y^2 stands at two places),
+        // summed by hand: s[0..4] degree 4 (x^4 .. y^4), s[5..8] degree 3, s[9..11] degree 2,
+        // s[12..13] degree 1.
+        double s[14] = {};
         double r[6] = {};
-        m[20] = 1.0;
         const double* o = P.row(i).data();
         const int* neighbours = N.indices.row(i).data();
         for (int j = 0; j < k; ++j) {
             const double* p = P.row(neighbours[j]).data();
-            const double dx = (p[0] - o[0]) * scale, dy = (p[1] - o[1]) * scale,
-                         dz = (p[2] - o[2]) * scale;
+            const double dx = p[0] - o[0], dy = p[1] - o[1], dz = p[2] - o[2];
             const double x = dx * u(0) + dy * u(1) + dz * u(2);
             const double y = dx * v(0) + dy * v(1) + dz * v(2);
-            const double z = dx * w(0) + dy * w(1) + dz * w(2);
-            const double row[6] = {x * x, x * y, y * y, x, y, 1.0};
-            int entry = 0;
-            for (int a = 0; a < 6; ++a) {
-                r[a] += z * row[a];
-                for (int b = a; b < 6; ++b) {
-                    m[entry++] += row[a] * row[b];
-                }
+            const double z = dx * ws(0) + dy * ws(1) + dz * ws(2);
+            const double xx = x * x, xy = x * y, yy = y * y;
+            const double monomial[14] = {xx * xx, xx * xy, xx * yy, xy * yy, yy * yy,
+                                         xx * x,  xx * y,  x * yy,  yy * y,  xx,
+                                         xy,      yy,      x,       y};
+            for (int t = 0; t < 14; ++t) {
+                s[t] += monomial[t];
             }
+            r[0] += z * xx;
+            r[1] += z * xy;
+            r[2] += z * yy;
+            r[3] += z * x;
+            r[4] += z * y;
+            r[5] += z;
         }
-        Matrix6d AtA;
-        Vector6d Atz;
-        for (int a = 0, entry = 0; a < 6; ++a) {
-            Atz(a) = r[a];
-            for (int b = a; b < 6; ++b) {
-                AtA(b, a) = m[entry++]; // lower triangle, all the solver reads
-            }
-        }
-        // Cholesky without pivoting: A^T A is positive definite unless the fit is degenerate,
-        // which shows as a vanishing pivot.
-        const Eigen::LLT<Matrix6d, Eigen::Lower> llt(AtA);
-        const Vector6d pivots = llt.matrixLLT().diagonal().cwiseAbs2();
-        if (llt.info() != Eigen::Success ||
-            !(pivots.minCoeff() > degeneratePivot * AtA.diagonal().maxCoeff())) {
+        // Upper triangle of A^T A row by row, rows and columns (x^2, xy, y^2, x, y, 1).
+        const double m[21] = {s[0],   s[1],  s[2],  s[5],  s[6],  s[9], //
+                              s[2],   s[3],  s[6],  s[7],  s[10],       //
+                              s[4],   s[7],  s[8],  s[11],              //
+                              s[9],   s[10], s[12],                     //
+                              s[11],  s[13],                            //
+                              k + 1.0};
+        double c[6];
+        if (!solveNormalEquations(m, r, c)) {
             H(i) = 0.0;
             continue;
         }
-        const Vector6d c = llt.solve(Atz);
-        const double a = c(0), b = c(1), cc = c(2), d = c(3), e = c(4);
+        const double a = c[0], b = c[1], cc = c[2], d = c[3], e = c[4];
         // Mean curvature of the graph z(x, y) at the origin, gradient (d, e) included:
         // H = ((1 + e^2) z_xx - 2 d e z_xy + (1 + d^2) z_yy) / (2 (1 + d^2 + e^2)^(3/2)).
         const double g = 1.0 + d * d + e * e;

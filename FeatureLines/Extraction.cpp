@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <numeric>
+#include <vector>
 
 #include "FeatureLines/CloudIO.h"
 
@@ -24,55 +24,6 @@ void report(const std::function<bool(double, const std::string&)>& progress, dou
     }
 }
 
-/// Exact duplicates carry no geometry and make a neighbourhood of one repeated point: merged.
-/// The distinct points keep the order of their first occurrence. An open-addressing hash table
-/// of the first occurrences finds them in one pass (a sort of the rows cost a tenth of the
-/// whole extraction on 1M points).
-PointMatrix distinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
-{
-    const Eigen::Index n = P.rows();
-    // Coordinates compare as numbers: -0.0 equals 0.0, so both hash alike (x + 0.0 is +0.0).
-    const auto bits = [](double x) {
-        x += 0.0;
-        std::uint64_t b;
-        std::memcpy(&b, &x, sizeof b);
-        return b;
-    };
-    const auto hash = [&](Eigen::Index i) {
-        std::uint64_t h = bits(P(i, 0)) * 0x9E3779B97F4A7C15ULL;
-        h = (h ^ (h >> 29) ^ bits(P(i, 1))) * 0xBF58476D1CE4E5B9ULL;
-        h = (h ^ (h >> 32) ^ bits(P(i, 2))) * 0x94D049BB133111EBULL;
-        return h ^ (h >> 31);
-    };
-    std::size_t slots = 16;
-    while (slots < 2 * static_cast<std::size_t>(n)) {
-        slots *= 2;
-    }
-    std::vector<int> table(slots, -1); // slot -> distinct point, -1 empty
-    std::vector<int> firstOf;          // distinct point -> its first input row
-    firstOf.reserve(static_cast<size_t>(n));
-    inputToPoint.resize(static_cast<size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) {
-        std::size_t slot = hash(i) & (slots - 1);
-        while (table[slot] >= 0 && P.row(firstOf[table[slot]]) != P.row(i)) {
-            slot = (slot + 1) & (slots - 1);
-        }
-        if (table[slot] < 0) {
-            table[slot] = static_cast<int>(firstOf.size());
-            firstOf.push_back(static_cast<int>(i));
-        }
-        inputToPoint[i] = table[slot];
-    }
-    if (firstOf.size() == static_cast<size_t>(n)) {
-        return P;
-    }
-    PointMatrix distinct(static_cast<Eigen::Index>(firstOf.size()), 3);
-    for (size_t r = 0; r < firstOf.size(); ++r) {
-        distinct.row(static_cast<Eigen::Index>(r)) = P.row(firstOf[r]);
-    }
-    return distinct;
-}
-
 /// Bits 0..20 of v spread to every third bit (bit b to bit 3 b).
 std::uint64_t spreadBits(std::uint64_t v)
 {
@@ -85,13 +36,60 @@ std::uint64_t spreadBits(std::uint64_t v)
     return v;
 }
 
-/// The rows of P in one canonical spatial order: by the Morton (Z-order) key of their
-/// coordinates quantised to 2^21 steps over the bounding box, points of one key by their
-/// coordinates. Every stage then finds the neighbours of a point in nearby rows (the cache
-/// holds them even when the input is stored in random order), and, since the order depends on
-/// the points' positions only, the extraction gives the same result whatever the input order.
-/// Returns order: row r of the reordered cloud is row order[r] of P.
-std::vector<int> spatialOrder(const PointMatrix& P)
+/// Sorts `keyed` by key, then each run of equal keys by `less`: a radix sort, 11 bits of the
+/// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
+/// points), passes in which every key has the same digit skipped.
+template <class Less>
+void sortByKey(std::vector<std::pair<std::uint64_t, int>>& keyed, const Less& less)
+{
+    constexpr int bits = 11, passes = 6; // 66 bits cover the 63 of the key
+    constexpr std::size_t buckets = std::size_t(1) << bits;
+    const std::size_t n = keyed.size();
+    std::vector<std::size_t> count(passes * buckets, 0);
+    for (const auto& item : keyed) {
+        for (int p = 0; p < passes; ++p) {
+            ++count[p * buckets + ((item.first >> (bits * p)) & (buckets - 1))];
+        }
+    }
+    std::vector<std::pair<std::uint64_t, int>> other(n);
+    for (int p = 0; p < passes && n > 0; ++p) {
+        std::size_t* start = count.data() + p * buckets;
+        if (start[(keyed[0].first >> (bits * p)) & (buckets - 1)] == n) {
+            continue; // one digit for all: the order stays
+        }
+        std::size_t at = 0;
+        for (std::size_t b = 0; b < buckets; ++b) {
+            const std::size_t c = start[b];
+            start[b] = at;
+            at += c;
+        }
+        for (const auto& item : keyed) {
+            other[start[(item.first >> (bits * p)) & (buckets - 1)]++] = item;
+        }
+        keyed.swap(other);
+    }
+    for (std::size_t first = 0; first < n;) {
+        std::size_t last = first + 1;
+        while (last < n && keyed[last].first == keyed[first].first) {
+            ++last;
+        }
+        if (last - first > 1) {
+            std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(first),
+                      keyed.begin() + static_cast<std::ptrdiff_t>(last), less);
+        }
+        first = last;
+    }
+}
+
+/// The distinct points of P in one canonical spatial order, and per input row its distinct
+/// point. The rows are sorted by the Morton (Z-order) key of their coordinates quantised to
+/// 2^21 steps over the bounding box, points of one key by their coordinates. Every stage then
+/// finds the neighbours of a point in nearby rows (the cache holds them even when the input is
+/// stored in random order), and, since the order depends on the points' positions only, the
+/// extraction gives the same result whatever the input order. Exact duplicates carry no
+/// geometry and make a neighbourhood of one repeated point: the sort puts them side by side,
+/// where they are merged.
+PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
 {
     const Eigen::Index n = P.rows();
     const Eigen::RowVector3d low = P.colwise().minCoeff();
@@ -107,18 +105,33 @@ std::vector<int> spatialOrder(const PointMatrix& P)
         }
         keyed[static_cast<size_t>(i)] = {key, static_cast<int>(i)};
     }
-    std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+    // Coordinates compare as numbers: -0.0 equals 0.0, and duplicates compare equal, so which of
+    // them comes first does not matter.
+    const auto less = [&](const std::pair<std::uint64_t, int>& a,
+                          const std::pair<std::uint64_t, int>& b) {
         if (a.first != b.first) {
             return a.first < b.first;
         }
         const auto pa = P.row(a.second), pb = P.row(b.second);
         return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end());
-    });
-    std::vector<int> order(static_cast<size_t>(n));
-    for (size_t r = 0; r < order.size(); ++r) {
-        order[r] = keyed[r].second;
+    };
+    sortByKey(keyed, less);
+    inputToPoint.resize(static_cast<size_t>(n));
+    std::vector<int> firstOf; // distinct point -> an input row holding it
+    firstOf.reserve(static_cast<size_t>(n));
+    for (size_t r = 0; r < keyed.size(); ++r) {
+        const int i = keyed[r].second;
+        if (firstOf.empty() || P.row(firstOf.back()) != P.row(i)) {
+            firstOf.push_back(i);
+        }
+        inputToPoint[static_cast<size_t>(i)] = static_cast<int>(firstOf.size()) - 1;
     }
-    return order;
+    PointMatrix distinct(static_cast<Eigen::Index>(firstOf.size()), 3);
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index r = 0; r < distinct.rows(); ++r) {
+        distinct.row(r) = P.row(firstOf[static_cast<size_t>(r)]);
+    }
+    return distinct;
 }
 
 void requireSurface(const PointMatrix& P)
@@ -253,7 +266,7 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
 {
     checkFinite(P, "point cloud");
     CloudGeometry g;
-    g.points = distinctPoints(P, g.inputToPoint);
+    g.points = orderedDistinctPoints(P, g.inputToPoint);
     if (g.points.rows() <= options.k) {
         throw std::invalid_argument(
             "point cloud: " + std::to_string(g.points.rows()) + " distinct points (" +
@@ -262,19 +275,6 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
             " neighbours per point");
     }
     requireSurface(g.points);
-    {
-        const std::vector<int> order = spatialOrder(g.points);
-        PointMatrix sorted(g.points.rows(), 3);
-        std::vector<int> rowOf(order.size());
-        for (size_t r = 0; r < order.size(); ++r) {
-            sorted.row(static_cast<Eigen::Index>(r)) = g.points.row(order[r]);
-            rowOf[static_cast<size_t>(order[r])] = static_cast<int>(r);
-        }
-        g.points = std::move(sorted);
-        for (int& p : g.inputToPoint) {
-            p = rowOf[static_cast<size_t>(p)];
-        }
-    }
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
     g.spacing = meanSpacing(g.neighbours);

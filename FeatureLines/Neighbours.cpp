@@ -172,6 +172,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
         std::vector<std::uint32_t> passed;
         std::vector<Candidate> near(wanted);
         std::vector<double> nearDistance;
+        std::vector<float> nearRounded;
         std::vector<int> nearIndex;
         double radiusGuess = 0.0;
         // The k nearest of point i are the first k of `near`, sorted.
@@ -269,6 +270,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
             passed.resize(m);
             near.resize(std::max(m, wanted));
             nearDistance.resize(m);
+            nearRounded.resize(m);
             nearIndex.resize(m);
             for (std::size_t c = 0; c < m; ++c) {
                 cx[c] = static_cast<float>(Q(ball[c], 0) - Q(q0, 0));
@@ -315,6 +317,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
                     const double d2 = (Q.row(candidate) - Q.row(j)).squaredNorm();
                     if (d2 <= squaredBound && candidate != static_cast<std::uint32_t>(j)) {
                         nearDistance[count] = d2;
+                        nearRounded[count] = static_cast<float>(d2);
                         nearIndex[count] = static_cast<int>(original[candidate]);
                         ++count;
                     }
@@ -322,14 +325,25 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
                 // count >= k: the k + 1 points within r0 of q0, but q, are within the bound.
                 // Each candidate goes to its rank in the closer() order, counted branch-free:
                 // a comparison sort of about 1.25 (k + 1) values mispredicts every other branch.
+                // The count runs on the distances rounded to float, four at a time: rounding
+                // keeps their order (a smaller rounded value comes from a smaller distance), so
+                // only candidates whose rounded distances are equal are compared exactly.
                 const Eigen::Index i = original[j];
                 for (std::size_t a = 0; a < count; ++a) {
                     const double da = nearDistance[a];
+                    const float fa = nearRounded[a];
                     const int ia = nearIndex[a];
-                    int rank = 0;
-                    for (std::size_t b = 0; b < count; ++b) {
-                        rank += (nearDistance[b] < da) |
-                                ((nearDistance[b] == da) & (nearIndex[b] < ia));
+                    int rank = 0, equal = 0;
+                    for (std::size_t b = 0; b < count; ++b) { // vectorised
+                        rank += nearRounded[b] < fa;
+                        equal += nearRounded[b] == fa;
+                    }
+                    if (equal > 1) { // another candidate than a itself
+                        for (std::size_t b = 0; b < count; ++b) {
+                            rank += (nearRounded[b] == fa) &
+                                    ((nearDistance[b] < da) |
+                                     ((nearDistance[b] == da) & (nearIndex[b] < ia)));
+                        }
                     }
                     if (rank < k) {
                         result.indices(i, rank) = ia;

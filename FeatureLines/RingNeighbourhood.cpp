@@ -45,6 +45,19 @@ constexpr double coincidentFraction = 1e-12;
 /// level; it makes the four co-circular diagonals of an exact square lattice non-neighbours.
 constexpr double straightTurn = 1e-9;
 
+/// The hull is first built from the origin and the images of the nearest neighbours only,
+/// this many. The others come by decreasing |w| (the neighbours are sorted nearest first) and
+/// most lie well inside it: inside the largest disc about the origin that the hull holds (its
+/// distance to the nearest hull edge), so they cannot change it and are dropped; the hull is
+/// built again when any is left. On scan-like clouds the Delaunay neighbours are nearly
+/// always among the nearest 8.
+constexpr int firstCandidates = 8;
+
+/// A candidate is dropped only when it lies inside that disc by this relative margin of its
+/// squared radius, far above the rounding of the straightness test: a dropped candidate lies
+/// strictly inside the hull, so the hull, vertex for vertex, is that of all the candidates.
+constexpr double insideMargin = 1e-6;
+
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
@@ -58,11 +71,11 @@ double pseudoAngle(double x, double y)
     return x >= 0.0 ? p : (y >= 0.0 ? 2.0 - p : -2.0 - p);
 }
 
-/// True when o -> a -> b turns strictly left (candidates o, a, b).
-bool turnsLeft(const Candidates& c, int o, int a, int b)
+/// True when o -> a -> b turns strictly left (candidates o, a, b of the coordinates x, y).
+inline bool turnsLeft(const double* x, const double* y, int o, int a, int b)
 {
-    const double ax = c.x[a] - c.x[o], ay = c.y[a] - c.y[o];
-    const double bx = c.x[b] - c.x[o], by = c.y[b] - c.y[o];
+    const double ax = x[a] - x[o], ay = y[a] - y[o];
+    const double bx = x[b] - x[o], by = y[b] - y[o];
     const double cross = ax * by - ay * bx;
     // A right turn or none needs no square root (the bound is not negative).
     return cross > 0.0 &&
@@ -74,6 +87,8 @@ bool turnsLeft(const Candidates& c, int o, int a, int b)
 void convexHull(const Candidates& c, std::vector<int>& order, std::vector<int>& hull)
 {
     const int n = c.count;
+    const double* x = c.x.data();
+    const double* y = c.y.data();
     // Sorted by x, then y; an insertion sort, fastest on so few, keeps exact ties in candidate
     // order.
     order.resize(static_cast<size_t>(n));
@@ -81,7 +96,7 @@ void convexHull(const Candidates& c, std::vector<int>& order, std::vector<int>& 
         int b = a;
         while (b > 0) {
             const int prev = order[b - 1];
-            if (!(c.x[a] < c.x[prev] || (c.x[a] == c.x[prev] && c.y[a] < c.y[prev]))) {
+            if (!(x[a] < x[prev] || (x[a] == x[prev] && y[a] < y[prev]))) {
                 break;
             }
             order[b] = prev;
@@ -96,19 +111,41 @@ void convexHull(const Candidates& c, std::vector<int>& order, std::vector<int>& 
     hull.resize(2 * static_cast<size_t>(n));
     int size = 0;
     for (int i = 0; i < n; ++i) { // lower chain
-        while (size >= 2 && !turnsLeft(c, hull[size - 2], hull[size - 1], order[i])) {
+        while (size >= 2 && !turnsLeft(x, y, hull[size - 2], hull[size - 1], order[i])) {
             --size;
         }
         hull[size++] = order[i];
     }
     const int lower = size + 1;
     for (int i = n - 1; i-- > 0;) { // upper chain
-        while (size >= lower && !turnsLeft(c, hull[size - 2], hull[size - 1], order[i])) {
+        while (size >= lower && !turnsLeft(x, y, hull[size - 2], hull[size - 1], order[i])) {
             --size;
         }
         hull[size++] = order[i];
     }
     hull.resize(static_cast<size_t>(size - 1)); // the last point repeats the first
+}
+
+/// The squared radius of the largest disc about the origin (candidate 0) inside the hull, or
+/// 0 when the origin is not strictly inside it (a border point, or a degenerate hull).
+double insideRadiusSquared(const Candidates& c, const std::vector<int>& hull)
+{
+    const std::size_t size = hull.size();
+    if (size < 3) {
+        return 0.0;
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t h = 0; h < size; ++h) {
+        const int a = hull[h], b = hull[(h + 1) % size];
+        // The origin lies left of every edge of the counter-clockwise hull when it is inside.
+        const double cross = c.x[a] * c.y[b] - c.y[a] * c.x[b];
+        if (!(cross > 0.0)) {
+            return 0.0;
+        }
+        const double ex = c.x[b] - c.x[a], ey = c.y[b] - c.y[a];
+        smallest = std::min(smallest, cross * cross / (ex * ex + ey * ey));
+    }
+    return smallest;
 }
 
 } // namespace
@@ -133,7 +170,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
 
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        Candidates candidates(k + 1);
+        Candidates candidates(k + 1), images(k);
         std::vector<int> order, hull;
 #pragma omp for schedule(static, 1)
         for (Eigen::Index b = 0; b < blocks; ++b) {
@@ -151,8 +188,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
                 // Floater and Reimers: q is a Delaunay neighbour of p (at the origin) iff its
                 // half-plane {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff
                 // 2 q / |q|^2 is a vertex of the convex hull of these points and the origin.
-                candidates.clear();
-                candidates.add(0.0, 0.0, -1);
+                images.clear();
                 for (int j = 0; j < k; ++j) {
                     const int q = N.indices(i, j);
                     const Eigen::Vector3d d = (P.row(q) - P.row(i)).transpose();
@@ -162,9 +198,28 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
                     if (!(s > tooClose)) {
                         continue;
                     }
-                    candidates.add(2.0 * x / s, 2.0 * y / s, q);
+                    images.add(2.0 * x / s, 2.0 * y / s, q);
+                }
+                candidates.clear();
+                candidates.add(0.0, 0.0, -1);
+                const int first = std::min(images.count, firstCandidates);
+                for (int c = 0; c < first; ++c) {
+                    candidates.add(images.x[c], images.y[c], images.index[c]);
                 }
                 convexHull(candidates, order, hull);
+                if (first < images.count) {
+                    const double inside =
+                        insideRadiusSquared(candidates, hull) * (1.0 - insideMargin);
+                    for (int c = first; c < images.count; ++c) {
+                        const double x = images.x[c], y = images.y[c];
+                        if (!(x * x + y * y < inside)) {
+                            candidates.add(x, y, images.index[c]);
+                        }
+                    }
+                    if (candidates.count > first + 1) {
+                        convexHull(candidates, order, hull);
+                    }
+                }
 
                 // The hull runs counter-clockwise, so its vertices are already in angular order
                 // around the point, which lies inside or on it. A border point is a vertex of its

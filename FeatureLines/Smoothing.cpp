@@ -38,26 +38,36 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
     // Sec. 2.4: the region holds no sharp edge, so its points are smoothed among themselves;
     // neighbours outside it (across a sharp edge) are left out of the umbrella.
     const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
-    std::vector<int> offsets(m + 1, 0);
-    std::vector<int> members;
-    members.reserve(m * N.k());
-    for (Eigen::Index s = 0; s < m; ++s) {
-        const int i = subset[s];
-        for (int j = 0; j < N.k(); ++j) {
-            if (inSubset[N.indices(i, j)]) {
-                members.push_back(N.indices(i, j));
-            }
-        }
-        offsets[s + 1] = static_cast<int>(members.size());
-    }
-
-    PointMatrix current = P;
-    PointMatrix moved(m, 3);
-    // The subset of all points in row order (a whole region) needs no copying back.
+    // The subset of all points in row order (a whole region) needs no copying back, and its
+    // umbrellas are the neighbourhoods themselves (every neighbour is in the subset).
     bool everyRow = m == n;
     for (Eigen::Index s = 0; s < m && everyRow; ++s) {
         everyRow = subset[s] == s;
     }
+    std::vector<int> offsets;
+    std::vector<int> members;
+    if (everyRow) {
+        offsets.resize(static_cast<size_t>(m) + 1);
+        for (Eigen::Index s = 0; s <= m; ++s) {
+            offsets[s] = static_cast<int>(s) * N.k();
+        }
+    } else {
+        offsets.assign(static_cast<size_t>(m) + 1, 0);
+        members.reserve(m * N.k());
+        for (Eigen::Index s = 0; s < m; ++s) {
+            const int i = subset[s];
+            for (int j = 0; j < N.k(); ++j) {
+                if (inSubset[N.indices(i, j)]) {
+                    members.push_back(N.indices(i, j));
+                }
+            }
+            offsets[s + 1] = static_cast<int>(members.size());
+        }
+    }
+    const int* umbrella = everyRow ? N.indices.data() : members.data();
+
+    PointMatrix current = P;
+    PointMatrix moved(m, 3);
     // One umbrella step for every subset point from the same positions (Jacobi), so the
     // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
     auto step = [&](double factor) {
@@ -71,7 +81,7 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
             }
             Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
             for (int j = offsets[s]; j < offsets[s + 1]; ++j) {
-                mean += current.row(members[j]);
+                mean += current.row(umbrella[j]);
             }
             mean /= count;
             moved.row(s) = current.row(i) + factor * (mean - current.row(i));
