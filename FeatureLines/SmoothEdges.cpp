@@ -574,6 +574,7 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     const auto weigh = [&](const RegionGeometry& r) {
         RegionGeometry::ScaleTrial trial;
         trial.scale = r.spacing / g.spacing;
+        trial.acceptedThresholds = 0;
         trial.points = static_cast<int>(r.points.rows());
         trial.noise = r.noise;
         for (const ThresholdDecision& d : automaticThresholds(r, coarseOptions)) {
@@ -581,8 +582,13 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
         }
         return trial;
     };
-    g.scaleTrials.push_back(weigh(g));
-    int best = g.scaleTrials.back().acceptedThresholds;
+    // The coarse scales first: the region's own scale needs weighing (a labelling of all its
+    // points per threshold searched) only when one of them accepts a threshold.
+    RegionGeometry::ScaleTrial own;
+    own.points = static_cast<int>(m);
+    own.noise = g.noise;
+    g.scaleTrials.push_back(own);
+    int best = 0;
     std::shared_ptr<RegionGeometry> chosen;
     GridCentroids chosenGrid;
     Neighbourhoods chosenNeighbours;
@@ -601,6 +607,7 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
                           allIndices(cells), g.region, coarseSpacing, coarseOptions));
         fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
         g.scaleTrials.push_back(weigh(*coarse));
+        // The finer of two coarse scales on a tie.
         if (g.scaleTrials.back().acceptedThresholds > best) {
             best = g.scaleTrials.back().acceptedThresholds;
             chosen = coarse;
@@ -612,6 +619,10 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
         }
     }
     if (!chosen) {
+        return;
+    }
+    g.scaleTrials.front() = weigh(g);
+    if (g.scaleTrials.front().acceptedThresholds >= best) {
         return;
     }
     g.curvatureScale = chosen->spacing / g.spacing;

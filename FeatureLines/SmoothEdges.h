@@ -219,13 +219,14 @@ struct RegionGeometry
     /// carried back to the region's points, on which the lines are drawn. Null at scale 1.
     std::shared_ptr<const RegionGeometry> coarse;
     /// Every scale weighed for the region: its spacing (x the region's), its number of points
-    /// and the thresholds the automatic rule accepts there.
+    /// and the thresholds the automatic rule accepts there; -1 at the region's own scale when
+    /// no coarser one accepted any (it was not weighed: it keeps the region whatever it finds).
     struct ScaleTrial
     {
         double scale = 1.0;
         int points = 0;
         double noise = 0.0;
-        int acceptedThresholds = 0;
+        int acceptedThresholds = -1;
     };
     std::vector<ScaleTrial> scaleTrials;
 };
