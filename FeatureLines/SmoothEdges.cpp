@@ -34,11 +34,18 @@ std::vector<int> allIndices(Eigen::Index n)
     return all;
 }
 
-/// The smallest piece of one level that counts as a patch, in the region's points: a patch's
-/// worth of the samples the curvature was computed on (AutomaticThresholdOptions::
-/// minInnerPoints), which at a coarser scale each stand for curvatureScale^2 of the region's.
+/// The smallest piece of one level that counts as a patch, in the region's points, when the
+/// curvature was computed at a coarser scale: a patch's worth of its samples
+/// (AutomaticThresholdOptions::minInnerPoints), each standing for curvatureScale^2 of the
+/// region's points. A smaller piece of the smooth carried-back field is a blob of the coarse
+/// samples' noise. At the region's own scale there is no such size: a piece of a few points can
+/// be a real patch's end (a fillet border running into a corner), and noise islands there are
+/// told by their values (islandMargin).
 int minIslandPoints(const RegionGeometry& region, const SmoothEdgeOptions& options)
 {
+    if (!(region.curvatureScale > 1.0)) {
+        return 0;
+    }
     const int inner = options.automatic.minInnerPoints > 0 ? options.automatic.minInnerPoints
                                                            : 2 * region.neighbours.k();
     return static_cast<int>(std::lround(inner * region.curvatureScale * region.curvatureScale));
