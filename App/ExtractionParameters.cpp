@@ -124,7 +124,7 @@ std::vector<Parameter> makeParameters()
          [](ExtractionOptions& o, double v) { o.smooth.smoothingOptions.iterations = int(v); }},
         {"NoiseThreshold", "Smooth edges",
          "Noise (x point spacing) above which Automatic smoothing applies; a clean surface shows "
-         "less than 0.05.",
+         "less than 0.005.",
          PK::Spacing, PS::Regions, 0, 10, 0.01, nullptr,
          [](const ExtractionOptions& o) { return o.smooth.noiseThreshold; },
          [](ExtractionOptions& o, double v) { o.smooth.noiseThreshold = v; }},
@@ -134,6 +134,15 @@ std::vector<Parameter> makeParameters()
          PK::Switch, PS::Regions, 0, 1, 1, nullptr,
          [](const ExtractionOptions& o) { return o.smooth.curvature.signedCurvature ? 1.0 : 0.0; },
          [](ExtractionOptions& o, double v) { o.smooth.curvature.signedCurvature = v != 0.0; }},
+
+        {"MaxCurvatureScale", "Smooth edges",
+         "Coarsest scale (x point spacing) at which a noisy region's curvature is also computed, "
+         "averaged onto coarser grids, when the noise would hide fillets larger than this at the "
+         "cloud's own spacing; the scale with the most significant thresholds is used. 1: the "
+         "cloud's own spacing only, as the paper.",
+         PK::Spacing, PS::Regions, 1, 64, 1, nullptr,
+         [](const ExtractionOptions& o) { return o.smooth.scales.maxScale; },
+         [](ExtractionOptions& o, double v) { o.smooth.scales.maxScale = v; }},
 
         // Line graph (Demarsin et al. 2007, reused for smooth edges in Sec. 3)
         {"NodeRadius", "Line graph",

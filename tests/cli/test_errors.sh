@@ -51,6 +51,7 @@ expect 2 "--outliers needs a finite number, got '5%'" threshold "$good" --outlie
 expect 2 "--below and --above exclude each other" threshold "$good" --below 0.1 --above 0.2
 expect 2 "--below needs a finite number, got 'inf'" threshold "$good" --below inf
 expect 2 "--smooth must be at least 0" curvature "$good" -o "$work/h" --smooth -3
+expect 2 "--max-scale must be at least 1" extract "$good" -o "$work/l.json" --max-scale 0.5
 expect 2 "--threads needs a whole number" curvature "$good" -o "$work/h" --threads all
 expect 2 "needs an output file" curvature "$good"
 expect 2 "'--json' takes no value" threshold "$good" --json=yes
