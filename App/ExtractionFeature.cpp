@@ -16,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "ExtractionCache.h"
 #include "ExtractionProgress.h"
@@ -143,6 +144,7 @@ Extraction::Extraction()
     initParameter(SmoothingIterations, "SmoothingIterations");
     initParameter(NoiseThreshold, "NoiseThreshold");
     initParameter(SignedCurvature, "SignedCurvature");
+    initParameter(MaxCurvatureScale, "MaxCurvatureScale");
     initParameter(NodeRadius, "NodeRadius");
     initParameter(ExtendedRadius, "ExtendedRadius");
     initParameter(MaxEdgeLength, "MaxEdgeLength");
@@ -247,6 +249,12 @@ ParameterValues Extraction::parameterValues() const
     ParameterValues values;
     for (const Parameter& p : parameters()) {
         const App::Property* prop = getPropertyByName(p.name);
+        if (!prop) {
+            // A parameter of the table without its property: a build error, reported, not a
+            // crash.
+            throw std::invalid_argument(std::string("the parameter ") + p.name +
+                                        " has no property");
+        }
         values.scalars[p.name] = readProperty(*prop, p.kind);
     }
     values.thresholds = Thresholds.getValues();

@@ -53,6 +53,7 @@ public:
     App::PropertyIntegerConstraint SmoothingIterations;
     App::PropertyFloatConstraint NoiseThreshold;
     App::PropertyBool SignedCurvature;
+    App::PropertyFloatConstraint MaxCurvatureScale;
     // Line graph
     App::PropertyFloatConstraint NodeRadius;
     App::PropertyFloatConstraint ExtendedRadius;
