@@ -66,8 +66,7 @@ struct ThresholdResult
 /// One threshold of `values`: the tau and start_curv that maximise e(tau, start_curv).
 /// Throws std::invalid_argument when fewer than 2 distinct values remain, or when no run of
 /// bins below the last one holds minPeakPercent of the values (nothing to separate).
-ThresholdResult findThreshold(const std::vector<double>& values,
-                              const ThresholdOptions& options = {});
+ThresholdResult findThreshold(const std::vector<double>& values, const ThresholdOptions& options = {});
 
 /// Sec. 2.3: the next lower threshold, searched on the values <= `threshold` only.
 ThresholdResult findLowerThreshold(const std::vector<double>& values, double threshold,

@@ -992,10 +992,14 @@ double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Ne
         for (int j = 0; j < N.k(); ++j) {
             const Eigen::Vector3d d = (P.row(N.indices(i, j)) - P.row(i)).transpose() / radius;
             const double x = d.dot(u), y = d.dot(v), z = d.dot(w);
-            Eigen::Matrix<double, 6, 1> row;
-            row << x * x, x * y, y * y, x, y, 1.0;
-            AtA.selfadjointView<Eigen::Lower>().rankUpdate(row);
-            Atz += z * row;
+            const double row[6] = {x * x, x * y, y * y, x, y, 1.0};
+            // The lower triangle, summed by hand: Eigen's rankUpdate is not inlined.
+            for (int a = 0; a < 6; ++a) {
+                Atz(a) += z * row[a];
+                for (int b = a; b < 6; ++b) {
+                    AtA(b, a) += row[b] * row[a];
+                }
+            }
         }
         const Eigen::LDLT<Eigen::Matrix<double, 6, 6>, Eigen::Lower> ldlt(AtA);
         if (ldlt.info() != Eigen::Success) {

@@ -242,6 +242,15 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
         throw std::invalid_argument(
             "regionNeighbourhoods: region labels and neighbourhoods differ in size");
     }
+    // A region of every point (a cloud without sharp edges) keeps every neighbourhood whole: a
+    // copy of N, at the speed of a copy.
+    bool everyPoint = members.size() == region.size();
+    for (size_t m = 0; m < members.size() && everyPoint; ++m) {
+        everyPoint = members[m] == static_cast<int>(m) && region[m] == regionId;
+    }
+    if (everyPoint) {
+        return N;
+    }
     // Row of each member in the sub-cloud: a table over the members' index range when the
     // region fills a good part of it (a few large regions, the usual case), else a hash map
     // (a small region spread over a large cloud).
