@@ -585,7 +585,12 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
         trial.points = static_cast<int>(r.points.rows());
         trial.noise = r.noise;
         for (const ThresholdDecision& d : automaticThresholds(r, coarseOptions)) {
-            trial.acceptedThresholds += d.accepted ? 1 : 0;
+            if (d.accepted) {
+                trial.separation = trial.acceptedThresholds == 0
+                                       ? d.separation
+                                       : std::min(trial.separation, d.separation);
+                ++trial.acceptedThresholds;
+            }
         }
         return trial;
     };

@@ -227,6 +227,8 @@ struct RegionGeometry
         int points = 0;
         double noise = 0.0;
         int acceptedThresholds = -1;
+        /// The least separation (noise floors, ThresholdDecision::separation) among them.
+        double separation = 0.0;
     };
     std::vector<ScaleTrial> scaleTrials;
 };

@@ -389,7 +389,8 @@ int runExtract(const Arguments& a)
                 trial.add("scale", number(st.scale))
                     .add("points", number(static_cast<long>(st.points)))
                     .add("noise", number(st.noise))
-                    .add("accepted_thresholds", number(static_cast<long>(st.acceptedThresholds)));
+                    .add("accepted_thresholds", number(static_cast<long>(st.acceptedThresholds)))
+                    .add("separation", number(st.separation));
                 trials += (t ? ", " : "") + trial.str();
             }
             region.add("scale_trials", trials + "]");
