@@ -390,10 +390,27 @@ void TaskExtraction::runFinished()
     input.options.progress = nullptr;
     adoptAnalysis();
     const size_t count = analysis.regions ? analysis.regions->geometry.size() : 0;
-    optionsUi->labelStatus->setText(tr("%1 points, spacing %2, %3 smooth region(s).")
-                                        .arg(analysis.geometry->inputToPoint.size())
-                                        .arg(shortNumber(analysis.geometry->spacing))
-                                        .arg(count));
+    QString status = tr("%1 points, spacing %2, %3 smooth region(s).")
+                         .arg(analysis.geometry->inputToPoint.size())
+                         .arg(shortNumber(analysis.geometry->spacing))
+                         .arg(count);
+    if (analysis.regions) {
+        // Regions whose noise hides their fillets at the cloud's spacing (CurvatureScale.h):
+        // their histograms and lines come from a coarser scale.
+        QStringList coarse;
+        for (const featurelines::RegionGeometry& g : analysis.regions->geometry) {
+            if (g.curvatureScale > 1.0) {
+                coarse << tr("%1 at %2 \u00d7 spacing")
+                              .arg(g.region)
+                              .arg(shortNumber(g.curvatureScale));
+            }
+        }
+        if (!coarse.isEmpty()) {
+            status += QLatin1Char(' ') + tr("Curvature at a coarser scale (noise): region %1.")
+                                             .arg(coarse.join(QLatin1String(", ")));
+        }
+    }
+    optionsUi->labelStatus->setText(status);
     const bool anyAccepted = std::any_of(regions.begin(), regions.end(),
                                          [](const Region& r) { return !r.accepted.empty(); });
     if (anyAccepted && (changed || needsRecompute(*e))) {

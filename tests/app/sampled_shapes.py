@@ -107,3 +107,24 @@ def sphere(radius, spacing, seed):
     rnd = random.Random(seed)
     return _sphere_part(rnd, (0.0, 0.0, 0.0), radius, spacing, (1.0, 1.0, 1.0), math.pi,
                         2 * math.pi)
+
+
+def rounded_cube_normal(point, edge, radius):
+    """The outward unit normal of rounded_cube(edge, radius, ...) at a point on it: away from
+    the nearest point of the inner cube the rounding is swept around."""
+    inner = edge / 2 - radius
+    d = [c - max(-inner, min(inner, c)) for c in point]
+    length = math.sqrt(sum(x * x for x in d))
+    return tuple(x / length for x in d)
+
+
+def with_normal_noise(points, normal_of, sigma, seed):
+    """Every point moved along normal_of(point) by a Gaussian offset of deviation sigma, as a
+    scanner's noise across the surface (random.Random(seed))."""
+    rnd = random.Random(seed)
+    noisy = []
+    for p in points:
+        n = normal_of(p)
+        t = rnd.gauss(0.0, sigma)
+        noisy.append((p[0] + t * n[0], p[1] + t * n[1], p[2] + t * n[2]))
+    return noisy

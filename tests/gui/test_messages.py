@@ -3,7 +3,8 @@
 else than a point cloud selected (a message, no object), a cloud of too few points (the
 analysis fails in the panel, Cancel leaves no object), and a sharp cube whose six faces are six
 smooth regions without a curvature valley (a region selector, "no candidate", OK computes its
-twelve sharp edges in the sharp colour)."""
+twelve sharp edges in the sharp colour), and a dense noisy rounded cube whose curvature is taken
+at a coarser scale (the status says so)."""
 
 import os
 import sys
@@ -118,6 +119,32 @@ def sharp_edges_kept():
     g.view_image("cube_sharp_lines")
 
 
+def dense_noisy_cube():
+    import FreeCADGui
+    import sampled_shapes
+
+    # Fillets of 32 spacings under noise of 0.3 spacing: at the cloud's own spacing their
+    # curvature lies in the noise (CurvatureScale.h); the panel says which regions are taken
+    # at a coarser scale.
+    edge, radius, h = 30.0, 8.0, 0.25
+    points = sampled_shapes.with_normal_noise(
+        sampled_shapes.rounded_cube(edge, radius, h, 5),
+        lambda p: sampled_shapes.rounded_cube_normal(p, edge, radius), 0.3 * h, 15)
+    state["dense"] = g.add_cloud(state["doc"], points, "DenseNoisy")
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(state["dense"])
+    FreeCADGui.runCommand("FeatureLines_Extract")
+
+
+def coarser_scale_named():
+    status = g.label("labelStatus")
+    g.check("1 smooth region" in status, status)
+    g.check("coarser scale" in status and "region 0 at" in status,
+            "the status names the region taken at a coarser scale: %s" % status)
+    g.screenshot("message_coarser_scale")
+    g.press_dialog_button("cancel")
+
+
 def build(steps):
     steps.then("a document with a box", setup)
     steps.then("Extract with nothing selected", nothing_selected)
@@ -131,6 +158,9 @@ def build(steps):
     steps.then("six regions, no valley; OK", six_regions_without_valley,
                wait_for=g.analysis_finished)
     steps.then("the cube's sharp edges", sharp_edges_kept, wait_for=lambda: not g.panel_is_open())
+    steps.then("Extract on a dense noisy rounded cube", dense_noisy_cube)
+    steps.then("the status names the coarser scale; Cancel", coarser_scale_named,
+               wait_for=g.analysis_finished)
 
 
 g.start("messages", build)
