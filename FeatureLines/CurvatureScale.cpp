@@ -7,25 +7,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include "FeatureLines/MortonCode.h"
+
 namespace featurelines {
-
-namespace {
-
-constexpr int bitsPerAxis = 21;
-
-/// The 21 low bits of x spread to every third bit (bit i to bit 3 i).
-std::uint64_t spreadBits(std::uint64_t x)
-{
-    x &= 0x1FFFFFULL;
-    x = (x | x << 32) & 0x1F00000000FFFFULL;
-    x = (x | x << 16) & 0x1F0000FF0000FFULL;
-    x = (x | x << 8) & 0x100F00F00F00F00FULL;
-    x = (x | x << 4) & 0x10C30C30C30C30C3ULL;
-    x = (x | x << 2) & 0x1249249249249249ULL;
-    return x;
-}
-
-} // namespace
 
 GridCentroids gridCentroids(const PointMatrix& P, double cell)
 {
@@ -38,7 +22,7 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     }
     const Eigen::RowVector3d low = P.colwise().minCoeff();
     const Eigen::RowVector3d cells = ((P.colwise().maxCoeff() - low) / cell).array().floor();
-    if (!(cells.maxCoeff() < static_cast<double>(1 << bitsPerAxis))) {
+    if (!(cells.maxCoeff() < static_cast<double>(1 << 21))) { // mortonCode's 21 bits an axis
         throw std::invalid_argument("grid centroids: the cloud spans too many cells");
     }
     // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
@@ -46,12 +30,10 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        std::uint64_t key = 0;
-        for (int d = 0; d < 3; ++d) {
-            const auto c = static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
-            key |= spreadBits(c) << d;
-        }
-        keyed[static_cast<size_t>(i)] = {key, static_cast<int>(i)};
+        const auto c = [&](int d) {
+            return static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
+        };
+        keyed[static_cast<size_t>(i)] = {mortonCode(c(0), c(1), c(2)), static_cast<int>(i)};
     }
     std::sort(keyed.begin(), keyed.end());
 

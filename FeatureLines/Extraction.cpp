@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/MortonCode.h"
 
 namespace featurelines {
 
@@ -22,18 +23,6 @@ void report(const std::function<bool(double, const std::string&)>& progress, dou
     if (progress && !progress(done, stage)) {
         throw ExtractionCancelled();
     }
-}
-
-/// Bits 0..20 of v spread to every third bit (bit b to bit 3 b).
-std::uint64_t spreadBits(std::uint64_t v)
-{
-    v &= 0x1FFFFF;
-    v = (v | v << 32) & 0x1F00000000FFFFULL;
-    v = (v | v << 16) & 0x1F0000FF0000FFULL;
-    v = (v | v << 8) & 0x100F00F00F00F00FULL;
-    v = (v | v << 4) & 0x10C30C30C30C30C3ULL;
-    v = (v | v << 2) & 0x1249249249249249ULL;
-    return v;
 }
 
 /// Sorts `keyed` by key, then each run of equal keys by `less`: a radix sort, 11 bits of the
@@ -98,12 +87,10 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
     std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        std::uint64_t key = 0;
-        for (int d = 0; d < 3; ++d) {
-            const auto q = static_cast<std::uint64_t>((P(i, d) - low[d]) * scale);
-            key |= spreadBits(q) << d;
-        }
-        keyed[static_cast<size_t>(i)] = {key, static_cast<int>(i)};
+        const auto q = [&](int d) {
+            return static_cast<std::uint64_t>((P(i, d) - low[d]) * scale);
+        };
+        keyed[static_cast<size_t>(i)] = {mortonCode(q(0), q(1), q(2)), static_cast<int>(i)};
     }
     // Coordinates compare as numbers: -0.0 equals 0.0, and duplicates compare equal, so which of
     // them comes first does not matter.
