@@ -557,6 +557,12 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
                           const SmoothEdgeOptions& options)
 {
     const CurvatureScaleOptions& so = options.scales;
+    if (!(so.maxScale >= 1.0) || !(so.carryWidth > 0.0) || !(so.rimWidth >= 0.0) ||
+        so.minPoints < 0) {
+        throw std::invalid_argument("curvature scales: the coarsest scale must be at least 1 "
+                                    "spacing, the carry width positive, the rim width and the "
+                                    "least number of cells not negative");
+    }
     if (!(so.maxScale >= 2.0) || !(g.curvatureNoise > 0.0)) {
         return;
     }
@@ -605,28 +611,34 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     GridCentroids chosenGrid;
     Neighbourhoods chosenNeighbours;
     for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
-        GridCentroids grid = gridCentroids(raw, s * g.spacing);
-        const Eigen::Index cells = grid.points.rows();
-        if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
-            break;
-        }
-        NeighbourOptions no;
-        no.k = g.neighbours.k();
-        Neighbourhoods cn = nearestNeighbours(grid.points, no);
-        const double coarseSpacing = meanSpacing(cn);
-        auto coarse = std::make_shared<RegionGeometry>(
-            analyseRegion(grid.points, cn, std::vector<int>(static_cast<size_t>(cells), g.region),
-                          allIndices(cells), g.region, coarseSpacing, coarseOptions));
-        fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
-        g.scaleTrials.push_back(weigh(*coarse));
-        // The finer of two coarse scales on a tie.
-        if (g.scaleTrials.back().acceptedThresholds > best) {
-            best = g.scaleTrials.back().acceptedThresholds;
-            chosen = coarse;
-            chosenGrid = std::move(grid);
-            chosenNeighbours = std::move(cn);
-        }
-        if (largestRadius(coarse->curvatureNoise) >= extent) {
+        // A coarser scale is an offer, not a stage: one that cannot be analysed (too few or
+        // degenerate cells) ends the trials and the region keeps what it has.
+        try {
+            GridCentroids grid = gridCentroids(raw, s * g.spacing);
+            const Eigen::Index cells = grid.points.rows();
+            if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
+                break;
+            }
+            NeighbourOptions no;
+            no.k = g.neighbours.k();
+            Neighbourhoods cn = nearestNeighbours(grid.points, no);
+            const double coarseSpacing = meanSpacing(cn);
+            auto coarse = std::make_shared<RegionGeometry>(analyseRegion(
+                grid.points, cn, std::vector<int>(static_cast<size_t>(cells), g.region),
+                allIndices(cells), g.region, coarseSpacing, coarseOptions));
+            fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
+            g.scaleTrials.push_back(weigh(*coarse));
+            // The finer of two coarse scales on a tie.
+            if (g.scaleTrials.back().acceptedThresholds > best) {
+                best = g.scaleTrials.back().acceptedThresholds;
+                chosen = coarse;
+                chosenGrid = std::move(grid);
+                chosenNeighbours = std::move(cn);
+            }
+            if (largestRadius(coarse->curvatureNoise) >= extent) {
+                break;
+            }
+        } catch (const std::invalid_argument&) {
             break;
         }
     }

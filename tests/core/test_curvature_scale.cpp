@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <set>
+#include <string>
 
 #include "FeatureLines/CurvatureScale.h"
 #include "FeatureLines/Extraction.h"
@@ -188,4 +190,25 @@ TEST(CurvatureScale, ADenseNoisyRoundedCubeShowsItsFilletsAtACoarserScale)
     }
     EXPECT_EQ(corners.size(), 8u) << "closed lines around every corner";
     EXPECT_EQ(faces, 6);
+}
+
+TEST(CurvatureScale, AbsurdScaleOptionsAreRefusedWithAMessage)
+{
+    const shapes::Sample plane = shapes::plane(10.0, 0.5, 4);
+    for (const auto& set : std::vector<std::function<void(CurvatureScaleOptions&)>>{
+             [](CurvatureScaleOptions& o) { o.maxScale = 0.5; },
+             [](CurvatureScaleOptions& o) { o.maxScale = std::nan(""); },
+             [](CurvatureScaleOptions& o) { o.carryWidth = 0.0; },
+             [](CurvatureScaleOptions& o) { o.rimWidth = -1.0; },
+             [](CurvatureScaleOptions& o) { o.minPoints = -5; }}) {
+        SmoothEdgeOptions options;
+        set(options.scales);
+        try {
+            wholeCloud(plane.points, options);
+            ADD_FAILURE() << "accepted";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("curvature scales"), std::string::npos)
+                << e.what();
+        }
+    }
 }
