@@ -337,8 +337,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     for (Eigen::Index i = 0; i < n; i += stride) {
         spreads.push_back(result.spread(i));
     }
+    result.medianSpread = median(spreads);
     result.growAngle =
-        std::clamp(options.noiseSpreadFactor * median(spreads),
+        std::clamp(options.noiseSpreadFactor * result.medianSpread,
                    std::min(options.joinAngle, options.growAngle), options.growAngle);
     std::vector<char> grows(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {

@@ -149,6 +149,9 @@ struct FirstOrderSegmentation
     int excessNeighbours = 0;
     /// Degrees: the spread limit used (growAngle, noiseSpreadFactor).
     double growAngle = 0.0;
+    /// Degrees: the cloud's median spread (over an even stride of at most ~100 000 points),
+    /// what noise alone gives on the smooth patches that hold most points.
+    double medianSpread = 0.0;
 
     int clusterCount() const { return static_cast<int>(clusterSize.size()); }
     bool isCandidate(Eigen::Index i) const { return smallCluster[cluster[i]] != 0; }

@@ -297,10 +297,10 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
         throw std::invalid_argument("sharp edges: the point spacing must be a positive number");
     }
     if (!(options.fitRadius > 0.0) || options.minFitPoints < 3 ||
-        !(options.resampleSpacing >= 0.0)) {
+        !(options.resampleSpacing >= 0.0) || !(options.supportSpreadFactor >= 0.0)) {
         throw std::invalid_argument(
-            "sharp edges: the fit radius must be positive, the fit needs "
-            "at least 3 points and the resampling step must not be negative");
+            "sharp edges: the fit radius must be positive, the fit needs at least 3 points, and "
+            "the resampling step and the support spread factor must not be negative");
     }
     requireSurface(P, spacing);
 
@@ -332,10 +332,12 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
     // Free ends are extended only along points whose normals spread as a crease's do: a
-    // crease that left too few candidates (noise thins them) still bends the normals.
+    // crease that left too few candidates (noise thins them) still bends the normals
+    // (supportSpreadFactor).
+    const double supportAngle = std::max(s.growAngle, options.supportSpreadFactor * s.medianSpread);
     std::vector<char> bending(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-        bending[i] = s.spread(i) > s.growAngle ? 1 : 0;
+        bending[i] = s.spread(i) > supportAngle ? 1 : 0;
     }
     const ClusterGraph graph =
         buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label, bending);
