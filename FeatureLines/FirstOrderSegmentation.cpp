@@ -206,9 +206,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         throw std::invalid_argument("first-order segmentation: the point spacing must be a "
                                     "positive number");
     }
-    if (!(options.noiseSpreadFactor >= 0.0)) {
-        throw std::invalid_argument("first-order segmentation: the noise spread factor must not "
-                                    "be negative");
+    if (!(options.noiseSpreadFactor >= 0.0) || !(options.noiseSpreadTail >= 0.0)) {
+        throw std::invalid_argument("first-order segmentation: the noise spread factor and tail "
+                                    "must not be negative");
     }
     if (!(options.minFilletRadius > 0.0)) {
         throw std::invalid_argument("first-order segmentation: the smallest fillet radius must "
@@ -337,10 +337,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     for (Eigen::Index i = 0; i < n; i += stride) {
         spreads.push_back(result.spread(i));
     }
-    result.medianSpread = median(spreads);
+    const double medianSpread = median(spreads);
     result.growAngle =
-        std::clamp(options.noiseSpreadFactor * result.medianSpread,
+        std::clamp(options.noiseSpreadFactor * medianSpread,
                    std::min(options.joinAngle, options.growAngle), options.growAngle);
+    result.noiseSpreadLimit = options.noiseSpreadTail * medianSpread;
     std::vector<char> grows(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         grows[i] =
@@ -356,9 +357,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     // themselves first: the sets then are the faces of flat points, read off before the other
     // growing points join them.
     const bool shallowCreases = options.shallowCreaseAngle > 0.0;
+    const double flatAngle = std::clamp(
+        result.noiseSpreadLimit, std::min(options.joinAngle, result.growAngle), result.growAngle);
     std::vector<char> flat(shallowCreases ? n : 0, 0);
     for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(flat.size()); ++i) {
-        flat[i] = result.spread(i) <= result.growAngle ? 1 : 0;
+        flat[i] = result.spread(i) <= flatAngle ? 1 : 0;
     }
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);

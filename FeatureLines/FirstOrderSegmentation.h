@@ -39,6 +39,17 @@ struct FirstOrderSegmentationOptions
     /// 20, stop the growing there too (the benchmark's chamfered box: sharp recall 0.944 ->
     /// 0.957 clean). A large factor keeps growAngle whatever the noise.
     double noiseSpreadFactor = 2.0;
+    /// Noise alone spreads the normals of a smooth patch's points beyond this many times the
+    /// cloud's median spread at 5 % of them (1.55 measured on the benchmark's planes at noise
+    /// 0.3 and 0.5 spacing; a 45 degree crease beyond it at 70 % of its points even at 0.5).
+    /// The flat points of shallowCreaseAngle's faces spread no more than this (within
+    /// [joinAngle, growAngle]): at noise 0.3 the normals on the wall of a hole of 8 spacings'
+    /// radius and at the centre of a 35 degree crease spread about the limit, mostly beyond
+    /// this, so the wall does not fall into faces with creases between them (benchmark: the
+    /// noisy plate's smallest hole keeps no false line). The sharp stage joins across gaps
+    /// only along points that spread beyond it (FirstOrderSegmentation::noiseSpreadLimit,
+    /// SharpEdges.h).
+    double noiseSpreadTail = 1.6;
     /// Degrees. A neighbour joins the cluster of a growing point when their normals differ by
     /// less than this. Half the spread limit: the points on a crease, whose normals lie half
     /// way between those of the two faces, join neither face.
@@ -78,8 +89,8 @@ struct FirstOrderSegmentationOptions
     /// noisy chamfered boxes every face of the part is one cluster). The rule of
     /// segmentByNormals that keeps a point between two face-sized clusters as a candidate then
     /// never applies, and most of the crease's points join a face. So faces are also read
-    /// from the points that are flat by the normals alone (spread within the limit): joined
-    /// within joinAngle, groups of more than k of them; no flat point lies within about a
+    /// from the points that are flat by the normals alone (spread within noiseSpreadTail):
+    /// joined within joinAngle, groups of more than k of them; no flat point lies within about a
     /// neighbourhood of a crease, so these faces do not leak. A point that cannot grow stays
     /// a candidate when the neighbours of its neighbours hold flat points of two faces whose
     /// planes there (the mean point and mean normal of those flat points) differ by less than
@@ -92,12 +103,12 @@ struct FirstOrderSegmentationOptions
     /// from turning sharp the fillets under minFilletRadius between perpendicular faces.
     /// Benchmark, noise 0.3 spacing: the noisy chamfered box keeps 64-65 % of the points
     /// within a spacing of its creases as candidates instead of 30-33 % (50 000 and 150 000
-    /// points); at noise 0.5 its sharp recall goes from 0.51 to 0.88. At noise 0.3 a crease
-    /// under about 40 degrees has flat points on it (its spread at the centre is about the
-    /// limit) and is not helped. The price: the wall of a hole of about 8 spacings' radius,
-    /// whose normals turn by the limit across a neighbourhood, breaks into faces of flat
-    /// points under noise, and a few of its points between them become candidates (the
-    /// benchmark's noisy plate, smallest hole: sharp precision 1.000 -> 0.994).
+    /// points); at noise 0.5 its sharp recall goes from 0.51 to 0.88. A crease under about
+    /// 40 degrees (at noise 0.3; 20 on a clean cloud) spreads its centre's normals no more
+    /// than noise does and is not helped. A curved surface whose normals turn by about
+    /// noiseSpreadTail across a neighbourhood can break into faces of flat points with
+    /// candidates between them (with flat points read at the spread limit instead, the
+    /// benchmark's noisy plate gained a false line on the wall of its smallest hole).
     double shallowCreaseAngle = 60.0;
     /// For shallowCreaseAngle, each face's plane is fitted to at least this many of its flat
     /// points among the neighbours of the point's neighbours: three fit a plane. Fewer are
@@ -132,9 +143,9 @@ struct FirstOrderSegmentation
     std::vector<int> clusterSize;
     /// #C nonzero for small clusters, whose points are the candidate feature points.
     std::vector<char> smallCluster;
-    /// #P face of every point whose normal spread is within the limit (growAngle): the groups
-    /// of such points joined within joinAngle, of more than k points, each numbered by its
-    /// lowest point (shallowCreaseAngle); -1 for the other points and when the rule is off.
+    /// #P face of every flat point (spread within noiseSpreadTail, shallowCreaseAngle): the
+    /// groups of flat points joined within joinAngle, of more than k points, each numbered by
+    /// its lowest point; -1 for the other points and when the rule is off.
     std::vector<int> face;
     /// #P normal spread of every point in degrees: the largest angle between its normal and
     /// those of its k neighbours (normals are unoriented, so at most 90).
@@ -149,9 +160,9 @@ struct FirstOrderSegmentation
     int excessNeighbours = 0;
     /// Degrees: the spread limit used (growAngle, noiseSpreadFactor).
     double growAngle = 0.0;
-    /// Degrees: the cloud's median spread (over an even stride of at most ~100 000 points),
-    /// what noise alone gives on the smooth patches that hold most points.
-    double medianSpread = 0.0;
+    /// Degrees: noiseSpreadTail times the cloud's median spread, beyond which a spread is not
+    /// noise's.
+    double noiseSpreadLimit = 0.0;
 
     int clusterCount() const { return static_cast<int>(clusterSize.size()); }
     bool isCandidate(Eigen::Index i) const { return smallCluster[cluster[i]] != 0; }

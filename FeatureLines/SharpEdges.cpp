@@ -297,10 +297,10 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
         throw std::invalid_argument("sharp edges: the point spacing must be a positive number");
     }
     if (!(options.fitRadius > 0.0) || options.minFitPoints < 3 ||
-        !(options.resampleSpacing >= 0.0) || !(options.supportSpreadFactor >= 0.0)) {
+        !(options.resampleSpacing >= 0.0)) {
         throw std::invalid_argument(
-            "sharp edges: the fit radius must be positive, the fit needs at least 3 points, and "
-            "the resampling step and the support spread factor must not be negative");
+            "sharp edges: the fit radius must be positive, the fit needs "
+            "at least 3 points and the resampling step must not be negative");
     }
     requireSurface(P, spacing);
 
@@ -332,9 +332,11 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
     // Free ends are extended only along points whose normals spread as a crease's do: a
-    // crease that left too few candidates (noise thins them) still bends the normals
-    // (supportSpreadFactor).
-    const double supportAngle = std::max(s.growAngle, options.supportSpreadFactor * s.medianSpread);
+    // crease that left too few candidates (noise thins them) still bends the normals. Beyond
+    // the segmentation's limit and beyond what noise gives (noiseSpreadTail): above noise of
+    // about 0.3 spacing the limit is clamped below the noise's own spread, a third of a
+    // plane's points pass it, and every way across a face found support.
+    const double supportAngle = std::max(s.growAngle, s.noiseSpreadLimit);
     std::vector<char> bending(n);
     for (Eigen::Index i = 0; i < n; ++i) {
         bending[i] = s.spread(i) > supportAngle ? 1 : 0;

@@ -229,7 +229,7 @@ TEST(FirstOrderSegmentation, NoisyRidgeOfFortyFiveDegreesKeepsItsPointsAsCandida
             house.points, p.normals.normals, p.neighbours, p.spacing, clusterRuleOnly);
 
         std::set<int> roofFaces, roofClustersWithout;
-        int onRidge = 0, with = 0, alone = 0;
+        int roof = 0, notFlat = 0, onRidge = 0, with = 0, alone = 0;
         for (Eigen::Index i = 0; i < house.size(); ++i) {
             const Eigen::RowVector3d x = house.points.row(i);
             if (std::abs(x.z()) > 25.0) {
@@ -237,7 +237,12 @@ TEST(FirstOrderSegmentation, NoisyRidgeOfFortyFiveDegreesKeepsItsPointsAsCandida
             }
             if ((house.part[i] == 2 || house.part[i] == 3) && std::abs(x.x()) > 8.0 &&
                 std::abs(x.x()) < 16.0) {
-                roofFaces.insert(seg.face[i]);
+                ++roof;
+                if (seg.face[i] < 0) {
+                    ++notFlat;
+                } else {
+                    roofFaces.insert(seg.face[i]);
+                }
                 roofClustersWithout.insert(without.cluster[i]);
             }
             if (std::hypot(x.x(), x.y() - ridgeY) < p.spacing) {
@@ -247,7 +252,8 @@ TEST(FirstOrderSegmentation, NoisyRidgeOfFortyFiveDegreesKeepsItsPointsAsCandida
             }
         }
         EXPECT_EQ(roofFaces.size(), 2u);
-        EXPECT_EQ(roofFaces.count(-1), 0u) << "a roof point away from the ridge is not flat";
+        // Noise alone spreads 5 % of a plane's normals beyond noiseSpreadTail.
+        EXPECT_LE(notFlat, 0.1 * roof);
         EXPECT_EQ(roofClustersWithout.size(), 1u) << "the growing did not leak this time";
         ASSERT_GT(onRidge, 50);
         EXPECT_GE(with, 0.4 * onRidge);

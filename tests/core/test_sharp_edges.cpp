@@ -236,7 +236,7 @@ TEST(SharpEdges, FilletsOfEightSpacingsStaySmoothUnderHeavyNoise)
 {
     // Noise of 0.5 spacing spreads the normals of a third of a plane's points beyond the
     // segmentation's limit (clamped at growAngle); joins across gaps may only run along points
-    // that spread beyond what noise gives (supportSpreadFactor), so the few candidates noise
+    // that spread beyond what noise gives (noiseSpreadTail), so the few candidates noise
     // leaves on the fillets are not joined into lines.
     for (unsigned seed : {1u, 2u, 3u}) {
         shapes::Sample rounded = shapes::roundedCube(60.0, 8.0, 1.0, seed);
