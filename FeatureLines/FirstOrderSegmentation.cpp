@@ -181,8 +181,8 @@ private:
 
     const Inputs& in_;
     std::vector<int> windowOf_; // per point: the last point whose window holds it
-    std::vector<long> seenBy_;  // per point: the last search that reached it
-    long search_ = 0;
+    std::vector<int> seenBy_;   // per point: the last search that reached it
+    int search_ = 0;
     std::vector<int> window_;
     std::vector<FaceSum> faces_;
     std::vector<int> queue_;
@@ -365,17 +365,26 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     }
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
+    // In the first pass a flat point notes whether it has growing neighbours that are not
+    // flat; the second pass visits only those and the points that are not flat.
+    std::vector<char> mixed(shallowCreases ? n : 0, 0);
     auto joinGrowing = [&](bool flatPairs) {
         for (Eigen::Index i = 0; i < n; ++i) {
-            if (!grows[i] || (flatPairs && !flat[i])) {
+            if (!grows[i] || (shallowCreases && flat[i] != flatPairs && !(flat[i] && mixed[i]))) {
                 continue;
             }
             int root = findRoot(parent, static_cast<int>(i));
             for (int j = 0; j < k; ++j) {
                 const int q = N.indices(i, j);
+                if (!grows[q]) {
+                    continue;
+                }
                 // The flat pairs in the first pass only, the others in the second.
-                if (!grows[q] || (shallowCreases && flatPairs != (flat[i] && flat[q])) ||
-                    similarity(i, q) < cosJoin) {
+                if (shallowCreases && flatPairs != (flat[i] && flat[q])) {
+                    mixed[i] = mixed[i] || flatPairs;
+                    continue;
+                }
+                if (similarity(i, q) < cosJoin) {
                     continue;
                 }
                 const int other = findRoot(parent, q);
