@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <omp.h>
 
 namespace featurelines {
@@ -39,6 +40,154 @@ int findRoot(std::vector<int>& parent, int a)
     return a;
 }
 
+/// The faces of flat points met among the neighbours of a point's neighbours, and the test of
+/// shallowCreaseAngle: does the point lie on a shallow crease between two of them?
+class ShallowCreaseTest
+{
+public:
+    struct Inputs
+    {
+        const PointMatrix& P;
+        const NormalMatrix& normals;
+        const Neighbourhoods& N;
+        const std::vector<char>& grows;
+        const std::vector<int>& face;
+        double cosJoin;
+        double cosShallow;     // faces closer to parallel than this are a shallow crease
+        double sinMinAngle;    // ... and farther from parallel than this
+        double planeTolerance; // model units
+        double lineReach;      // model units
+        int minFacePoints;
+    };
+
+    explicit ShallowCreaseTest(const Inputs& in) : in_(in) {}
+
+    bool operator()(int i)
+    {
+        const int k = in_.N.k();
+        if (windowOf_.empty()) { // the first test of this thread
+            windowOf_.assign(static_cast<std::size_t>(in_.P.rows()), -1);
+            seenBy_.assign(static_cast<std::size_t>(in_.P.rows()), -1);
+        }
+        // The point and the neighbours of its neighbours, once each (marked with i).
+        window_.clear();
+        auto add = [&](int q) {
+            if (windowOf_[q] != i) {
+                windowOf_[q] = i;
+                window_.push_back(q);
+            }
+        };
+        add(i);
+        for (int j = 0; j < k; ++j) {
+            const int a = in_.N.indices(i, j);
+            add(a);
+            for (int l = 0; l < k; ++l) {
+                add(in_.N.indices(a, l));
+            }
+        }
+        // Each face's flat points there: their mean and mean normal (turned to agree).
+        faces_.clear();
+        for (int q : window_) {
+            const int f = in_.face[q];
+            if (f < 0) {
+                continue;
+            }
+            auto at = std::find_if(faces_.begin(), faces_.end(),
+                                   [&](const FaceSum& s) { return s.face == f; });
+            if (at == faces_.end()) {
+                faces_.push_back({f, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+                at = faces_.end() - 1;
+            }
+            Eigen::Vector3d normal = in_.normals.row(q).transpose();
+            if (at->count > 0 && normal.dot(at->normal) < 0.0) {
+                normal = -normal;
+            }
+            at->point += in_.P.row(q).transpose();
+            at->normal += normal;
+            ++at->count;
+        }
+        const Eigen::Vector3d x = in_.P.row(i).transpose();
+        for (std::size_t a = 0; a < faces_.size(); ++a) {
+            for (std::size_t b = a + 1; b < faces_.size(); ++b) {
+                if (onCrease(faces_[a], faces_[b], x) &&
+                    !joinedAround(i, faces_[a].face, faces_[b].face)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+private:
+    struct FaceSum
+    {
+        int face;
+        int count;
+        Eigen::Vector3d point, normal;
+    };
+
+    /// x lies at the meeting of the two faces' planes, which meet at a shallow angle.
+    bool onCrease(const FaceSum& a, const FaceSum& b, const Eigen::Vector3d& x) const
+    {
+        if (a.count < in_.minFacePoints || b.count < in_.minFacePoints) {
+            return false;
+        }
+        const Eigen::Vector3d na = a.normal.normalized(), nb = b.normal.normalized();
+        const double c = na.dot(nb);
+        if (std::abs(c) < in_.cosShallow || na.cross(nb).norm() < in_.sinMinAngle) {
+            return false;
+        }
+        // Signed offsets of x from the planes, then the point of their line nearest to x.
+        const double ha = na.dot(x - a.point / a.count), hb = nb.dot(x - b.point / b.count);
+        if (std::min(std::abs(ha), std::abs(hb)) > in_.planeTolerance) {
+            return false;
+        }
+        const double det = 1.0 - c * c;
+        const Eigen::Vector3d shift =
+            -((ha - c * hb) / det) * na - ((hb - c * ha) / det) * nb; // x + shift on the line
+        return shift.norm() <= in_.lineReach;
+    }
+
+    /// Growing points within the window of point i join a flat point of face a to one of face
+    /// b (through neighbours whose normals differ by less than joinAngle).
+    bool joinedAround(int i, int a, int b)
+    {
+        const int k = in_.N.k();
+        ++search_; // marks the points this search has reached
+        queue_.clear();
+        for (int q : window_) {
+            if (in_.face[q] == a) {
+                seenBy_[q] = search_;
+                queue_.push_back(q);
+            }
+        }
+        for (std::size_t h = 0; h < queue_.size(); ++h) {
+            const int u = queue_[h];
+            for (int l = 0; l < k; ++l) {
+                const int v = in_.N.indices(u, l);
+                if (seenBy_[v] == search_ || windowOf_[v] != i || !in_.grows[v] ||
+                    std::abs(in_.normals.row(u).dot(in_.normals.row(v))) < in_.cosJoin) {
+                    continue;
+                }
+                if (in_.face[v] == b) {
+                    return true;
+                }
+                seenBy_[v] = search_;
+                queue_.push_back(v);
+            }
+        }
+        return false;
+    }
+
+    const Inputs& in_;
+    std::vector<int> windowOf_; // per point: the last point whose window holds it
+    std::vector<int> seenBy_;   // per point: the last search that reached it
+    int search_ = 0;
+    std::vector<int> window_;
+    std::vector<FaceSum> faces_;
+    std::vector<int> queue_;
+};
+
 } // namespace
 
 FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix& normals,
@@ -57,9 +206,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         throw std::invalid_argument("first-order segmentation: the point spacing must be a "
                                     "positive number");
     }
-    if (!(options.noiseSpreadFactor >= 0.0)) {
-        throw std::invalid_argument("first-order segmentation: the noise spread factor must not "
-                                    "be negative");
+    if (!(options.noiseSpreadFactor >= 0.0) || !(options.noiseSpreadTail >= 0.0)) {
+        throw std::invalid_argument("first-order segmentation: the noise spread factor and tail "
+                                    "must not be negative");
     }
     if (!(options.minFilletRadius > 0.0)) {
         throw std::invalid_argument("first-order segmentation: the smallest fillet radius must "
@@ -70,6 +219,15 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     }
     requireAngle(options.growAngle, "the grow angle");
     requireAngle(options.joinAngle, "the join angle");
+    if (options.shallowCreaseAngle != 0.0) {
+        requireAngle(options.shallowCreaseAngle, "the shallow crease angle");
+    }
+    if (!(options.creasePlaneTolerance > 0.0) || !(options.creaseLineReach > 0.0) ||
+        options.minFacePoints < 3) {
+        throw std::invalid_argument("first-order segmentation: the crease plane tolerance and "
+                                    "line reach must be positive, and a face's plane needs at "
+                                    "least 3 points");
+    }
     const int k = N.k();
     const double cosJoin = std::cos(options.joinAngle * pi / 180.0);
     auto similarity = [&](Eigen::Index a, Eigen::Index b) {
@@ -179,9 +337,11 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     for (Eigen::Index i = 0; i < n; i += stride) {
         spreads.push_back(result.spread(i));
     }
+    const double medianSpread = median(spreads);
     result.growAngle =
-        std::clamp(options.noiseSpreadFactor * median(spreads),
+        std::clamp(options.noiseSpreadFactor * medianSpread,
                    std::min(options.joinAngle, options.growAngle), options.growAngle);
+    result.noiseSpreadLimit = options.noiseSpreadTail * medianSpread;
     std::vector<char> grows(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {
         grows[i] =
@@ -192,17 +352,41 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
 
     // Growing points reached from one another form one cluster: the connected components of
     // the "grows and joins" relation, found with disjoint sets instead of a queue so the
-    // result does not depend on the choice of seeds.
+    // result does not depend on the choice of seeds. For shallowCreaseAngle the points whose
+    // normals spread within the limit (flat points, which all grow) are joined among
+    // themselves first: the sets then are the faces of flat points, read off before the other
+    // growing points join them.
+    const bool shallowCreases = options.shallowCreaseAngle > 0.0;
+    const double flatAngle = std::clamp(
+        result.noiseSpreadLimit, std::min(options.joinAngle, result.growAngle), result.growAngle);
+    std::vector<char> flat(shallowCreases ? n : 0, 0);
+    for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(flat.size()); ++i) {
+        flat[i] = result.spread(i) <= flatAngle ? 1 : 0;
+    }
     std::vector<int> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (!grows[i]) {
-            continue;
-        }
-        int root = findRoot(parent, static_cast<int>(i));
-        for (int j = 0; j < k; ++j) {
-            const int q = N.indices(i, j);
-            if (grows[q] && similarity(i, q) >= cosJoin) {
+    // In the first pass a flat point notes whether it has growing neighbours that are not
+    // flat; the second pass visits only those and the points that are not flat.
+    std::vector<char> mixed(shallowCreases ? n : 0, 0);
+    auto joinGrowing = [&](bool flatPairs) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (!grows[i] || (shallowCreases && flat[i] != flatPairs && !(flat[i] && mixed[i]))) {
+                continue;
+            }
+            int root = findRoot(parent, static_cast<int>(i));
+            for (int j = 0; j < k; ++j) {
+                const int q = N.indices(i, j);
+                if (!grows[q]) {
+                    continue;
+                }
+                // The flat pairs in the first pass only, the others in the second.
+                if (shallowCreases && flatPairs != (flat[i] && flat[q])) {
+                    mixed[i] = mixed[i] || flatPairs;
+                    continue;
+                }
+                if (similarity(i, q) < cosJoin) {
+                    continue;
+                }
                 const int other = findRoot(parent, q);
                 if (other != root) {
                     // The smaller root survives, as i's root is looked up only once.
@@ -211,7 +395,24 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
                 }
             }
         }
+    };
+    result.face.assign(n, -1);
+    if (shallowCreases) {
+        joinGrowing(true);
+        std::vector<int> flatInRoot(n, 0);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (flat[i]) {
+                result.face[i] = findRoot(parent, static_cast<int>(i));
+                ++flatInRoot[result.face[i]];
+            }
+        }
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (flat[i] && flatInRoot[result.face[i]] <= k) {
+                result.face[i] = -1; // a splinter, not a face
+            }
+        }
     }
+    joinGrowing(false);
     // A point that cannot grow joins the cluster of the growing neighbour whose normal is
     // closest to its own (the nearest such neighbour on a tie), unless its neighbours hold
     // growing points of two clusters that can be surface patches (at least k + 1 growing
@@ -224,32 +425,50 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         root[i] = findRoot(parent, static_cast<int>(i));
         growingInRoot[root[i]] += grows[i];
     }
+    const ShallowCreaseTest::Inputs creaseInputs{P,
+                                                 normals,
+                                                 N,
+                                                 grows,
+                                                 result.face,
+                                                 cosJoin,
+                                                 std::cos(options.shallowCreaseAngle * pi / 180.0),
+                                                 std::sin(options.joinAngle * pi / 180.0),
+                                                 options.creasePlaneTolerance * spacing,
+                                                 options.creaseLineReach * spacing,
+                                                 options.minFacePoints};
+
     std::vector<int> owner(n, -1);
-#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (grows[i]) {
-            continue;
-        }
-        double best = cosJoin;
-        int firstFace = -1;
-        bool betweenFaces = false;
-        for (int j = 0; j < k; ++j) {
-            const int q = N.indices(i, j);
-            if (!grows[q]) {
+#pragma omp parallel num_threads(threadCount(options.threads))
+    {
+        ShallowCreaseTest onShallowCrease(creaseInputs);
+#pragma omp for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (grows[i]) {
                 continue;
             }
-            if (growingInRoot[root[q]] > k) {
-                betweenFaces = betweenFaces || (firstFace >= 0 && root[q] != firstFace);
-                firstFace = root[q];
+            double best = cosJoin;
+            int firstFace = -1;
+            bool betweenFaces = false;
+            for (int j = 0; j < k; ++j) {
+                const int q = N.indices(i, j);
+                if (!grows[q]) {
+                    continue;
+                }
+                if (growingInRoot[root[q]] > k) {
+                    betweenFaces = betweenFaces || (firstFace >= 0 && root[q] != firstFace);
+                    firstFace = root[q];
+                }
+                const double s = similarity(i, q);
+                if (s > best || (s == best && owner[i] < 0)) {
+                    best = s;
+                    owner[i] = q;
+                }
             }
-            const double s = similarity(i, q);
-            if (s > best || (s == best && owner[i] < 0)) {
-                best = s;
-                owner[i] = q;
+            // A point without a growing neighbour of similar normal stays a candidate anyway.
+            if (betweenFaces ||
+                (shallowCreases && owner[i] >= 0 && onShallowCrease(static_cast<int>(i)))) {
+                owner[i] = -1;
             }
-        }
-        if (betweenFaces) {
-            owner[i] = -1;
         }
     }
 

@@ -39,6 +39,17 @@ struct FirstOrderSegmentationOptions
     /// 20, stop the growing there too (the benchmark's chamfered box: sharp recall 0.944 ->
     /// 0.957 clean). A large factor keeps growAngle whatever the noise.
     double noiseSpreadFactor = 2.0;
+    /// Noise alone spreads the normals of a smooth patch's points beyond this many times the
+    /// cloud's median spread at 5 % of them (1.55 measured on the benchmark's planes at noise
+    /// 0.3 and 0.5 spacing; a 45 degree crease beyond it at 70 % of its points even at 0.5).
+    /// The flat points of shallowCreaseAngle's faces spread no more than this (within
+    /// [joinAngle, growAngle]): at noise 0.3 the normals on the wall of a hole of 8 spacings'
+    /// radius and at the centre of a 35 degree crease spread about the limit, mostly beyond
+    /// this, so the wall does not fall into faces with creases between them (benchmark: the
+    /// noisy plate's smallest hole keeps no false line). The sharp stage joins across gaps
+    /// only along points that spread beyond it (FirstOrderSegmentation::noiseSpreadLimit,
+    /// SharpEdges.h).
+    double noiseSpreadTail = 1.6;
     /// Degrees. A neighbour joins the cluster of a growing point when their normals differ by
     /// less than this. Half the spread limit: the points on a crease, whose normals lie half
     /// way between those of the two faces, join neither face.
@@ -71,6 +82,49 @@ struct FirstOrderSegmentationOptions
     /// fillet at 20 000 points, 5.7 spacings: sharp precision 0.99 -> 0.90 on that part).
     /// 0: the full neighbourhood only.
     int fineNeighbours = 8;
+    /// Degrees; 0 turns the rule off. Noise lets the growing leak across a shallow crease:
+    /// where a few of its points happen to pass the planarity test, a chain of growing points
+    /// whose normals turn by less than joinAngle per step crosses it, somewhere along a long
+    /// edge there always is one, and the two faces become one cluster (on the benchmark's
+    /// noisy chamfered boxes every face of the part is one cluster). The rule of
+    /// segmentByNormals that keeps a point between two face-sized clusters as a candidate then
+    /// never applies, and most of the crease's points join a face. So faces are also read
+    /// from the points that are flat by the normals alone (spread within noiseSpreadTail):
+    /// joined within joinAngle, groups of more than k of them; no flat point lies within about a
+    /// neighbourhood of a crease, so these faces do not leak. A point that cannot grow stays
+    /// a candidate when the neighbours of its neighbours hold flat points of two faces whose
+    /// planes there (the mean point and mean normal of those flat points) differ by less than
+    /// this angle and by more than joinAngle and meet where the point lies
+    /// (creasePlaneTolerance, creaseLineReach), and the growing points there do not join the
+    /// two (a leak elsewhere does not count; a surface that is only noisy or curved, such as
+    /// the wall of a small hole, has its growing points all round the point). Steeper creases
+    /// stop the growing by themselves (a 90 degree crease's planarity excess is ten noise
+    /// deviations at 0.3 spacing) and are left to the cluster rule, which also keeps this rule
+    /// from turning sharp the fillets under minFilletRadius between perpendicular faces.
+    /// Benchmark, noise 0.3 spacing: the noisy chamfered box keeps 64-65 % of the points
+    /// within a spacing of its creases as candidates instead of 30-33 % (50 000 and 150 000
+    /// points); at noise 0.5 its sharp recall goes from 0.51 to 0.88. A crease under about
+    /// 40 degrees (at noise 0.3; 20 on a clean cloud) spreads its centre's normals no more
+    /// than noise does and is not helped. A curved surface whose normals turn by about
+    /// noiseSpreadTail across a neighbourhood can break into faces of flat points with
+    /// candidates between them (with flat points read at the spread limit instead, the
+    /// benchmark's noisy plate gained a false line on the wall of its smallest hole).
+    double shallowCreaseAngle = 60.0;
+    /// For shallowCreaseAngle, each face's plane is fitted to at least this many of its flat
+    /// points among the neighbours of the point's neighbours: three fit a plane. Fewer are
+    /// mostly the first flat points of a small fillet's ends, whose normals lean with the
+    /// fillet (on the benchmark's noisy chamfered box 85 % of the points the rule keeps next
+    /// to its creases see three or more on both faces, a third of those on the 20 000-point
+    /// fillets of 5-6 spacings).
+    int minFacePoints = 3;
+    /// Spacings: for shallowCreaseAngle, the point lies within this distance of one of the
+    /// two planes: a crease point lies on the face it belongs to, up to the noise, while a
+    /// point half way round a fillet of radius r between perpendicular faces lies 0.29 r off
+    /// both.
+    double creasePlaneTolerance = 1.0;
+    /// Spacings: ... and within this distance of the line where the two planes meet (the
+    /// candidate band of a crease is 3-4 spacings wide; SharpEdgeOptions::maxCreaseShift).
+    double creaseLineReach = 2.5;
     /// A cluster is large (a surface patch) when at least this many of its points have all
     /// their k neighbours inside it; otherwise it is small and its points are candidates.
     /// Counting whole neighbourhoods rather than points is the design's reading of "small":
@@ -89,6 +143,10 @@ struct FirstOrderSegmentation
     std::vector<int> clusterSize;
     /// #C nonzero for small clusters, whose points are the candidate feature points.
     std::vector<char> smallCluster;
+    /// #P face of every flat point (spread within noiseSpreadTail, shallowCreaseAngle): the
+    /// groups of flat points joined within joinAngle, of more than k points, each numbered by
+    /// its lowest point; -1 for the other points and when the rule is off.
+    std::vector<int> face;
     /// #P normal spread of every point in degrees: the largest angle between its normal and
     /// those of its k neighbours (normals are unoriented, so at most 90).
     Eigen::VectorXd spread;
@@ -102,6 +160,9 @@ struct FirstOrderSegmentation
     int excessNeighbours = 0;
     /// Degrees: the spread limit used (growAngle, noiseSpreadFactor).
     double growAngle = 0.0;
+    /// Degrees: noiseSpreadTail times the cloud's median spread, beyond which a spread is not
+    /// noise's.
+    double noiseSpreadLimit = 0.0;
 
     int clusterCount() const { return static_cast<int>(clusterSize.size()); }
     bool isCandidate(Eigen::Index i) const { return smallCluster[cluster[i]] != 0; }
@@ -117,10 +178,12 @@ struct FirstOrderSegmentation
 /// normal (within joinAngle), unless its growing neighbours belong to two clusters of at
 /// least k + 1 growing points (two faces, as large clusters need an interior point): then
 /// it lies on a crease too shallow to leave a band of candidates wider than a neighbourhood
-/// and stays a candidate. Every point ends in exactly one cluster, and the result does not
-/// depend on the point order beyond cluster numbering. Throws std::invalid_argument when the sizes
-/// disagree, a normal is not finite, the spacing is not positive or an angle is not in
-/// (0, 90].
+/// and stays a candidate; so does a point between two faces on a shallow crease
+/// (shallowCreaseAngle). Every point ends in exactly one cluster, and the result does not
+/// depend on the point order beyond cluster and face numbering. Throws std::invalid_argument when
+/// the sizes disagree, a normal is not finite, the spacing is not positive, an angle is not in (0,
+/// 90] (shallowCreaseAngle in [0, 90]), a crease length is not positive or minFacePoints is
+/// below 3.
 FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix& normals,
                                         const Neighbourhoods& N, double spacing,
                                         const FirstOrderSegmentationOptions& options = {});

@@ -332,10 +332,14 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     graphOptions.smoothingLength = 0.0;
     graphOptions.resampleSpacing = 0.0;
     // Free ends are extended only along points whose normals spread as a crease's do: a
-    // crease that left too few candidates (noise thins them) still bends the normals.
+    // crease that left too few candidates (noise thins them) still bends the normals. Beyond
+    // the segmentation's limit and beyond what noise gives (noiseSpreadTail): above noise of
+    // about 0.3 spacing the limit is clamped below the noise's own spread, a third of a
+    // plane's points pass it, and every way across a face found support.
+    const double supportAngle = std::max(s.growAngle, s.noiseSpreadLimit);
     std::vector<char> bending(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-        bending[i] = s.spread(i) > s.growAngle ? 1 : 0;
+        bending[i] = s.spread(i) > supportAngle ? 1 : 0;
     }
     const ClusterGraph graph =
         buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label, bending);

@@ -21,15 +21,16 @@ constexpr int boundaryLineLabel = 1;
 /// The graph options of the sharp stage: ClusterGraphOptions' defaults, with the network
 /// closed (Sec. 1.2 of the 2008 paper: the sharp lines and the boundary enclose the smooth
 /// regions). Every join across a gap must run along candidates or points whose normals bend
-/// (extractSharpEdges gives those to the graph), so no join crosses a face. A free end left
-/// after the joins is extended straight ahead to the line it points at within extendReach =
-/// 48 spacings, as far as facing ends are joined (facingEndsRadius): noise thins the
-/// candidates of a crease most near the corner where it ends, and the crease runs on
-/// straight to that corner. On the benchmark's noisy chamfered box sharp recall goes from
-/// 0.90 to 0.97 (a reach of 30: 0.95). An end that reaches no line is removed with its branch
-/// when that is no longer than maxFreeEndLength = 48 spacings; a longer piece is a real edge
-/// broken by noise and keeps its end (removing every free-ended piece drops the noisy
-/// chamfered box's sharp recall from 0.91 to 0.83 on another seed).
+/// beyond the segmentation's limit and beyond what noise gives (extractSharpEdges gives those
+/// to the graph; FirstOrderSegmentationOptions::noiseSpreadTail), so no join crosses a face. A free
+/// end left after the joins is extended straight ahead to the line it points at within extendReach
+/// = 48 spacings, as far as facing ends are joined (facingEndsRadius): noise thins the candidates
+/// of a crease most near the corner where it ends, and the crease runs on straight to that corner.
+/// On the benchmark's noisy chamfered box sharp recall goes from 0.90 to 0.97 (a reach of 30:
+/// 0.95). An end that reaches no line is removed with its branch when that is no longer than
+/// maxFreeEndLength = 48 spacings; a longer piece is a real edge broken by noise and keeps its end
+/// (removing every free-ended piece drops the noisy chamfered box's sharp recall from 0.91 to 0.83
+/// on another seed).
 inline ClusterGraphOptions sharpGraphOptions()
 {
     ClusterGraphOptions o;

@@ -196,6 +196,27 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
     if (removed) {
         connect();
     }
+    // A point that saw enough of its region may see none of it once those neighbours have
+    // gone (a scrap a few points wide between close sharp lines): it has no neighbourhood in
+    // its region and joins the band too, until no such point is left.
+    for (bool changed = true; changed;) {
+        changed = false;
+#pragma omp parallel for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            bool seesRegion = component[i] < 0;
+            for (int j = 0; j < N.k() && !seesRegion; ++j) {
+                seesRegion = component[N.indices(i, j)] == component[i];
+            }
+            tooFewInside[i] = !seesRegion;
+        }
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (tooFewInside[i]) {
+                --sizes[component[i]];
+                component[i] = -1;
+                changed = true;
+            }
+        }
+    }
     // Then regions too small to be regions.
     const int minPoints = options.minRegionPoints > 0 ? options.minRegionPoints : 2 * N.k();
     std::vector<int> order(sizes.size());

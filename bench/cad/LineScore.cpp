@@ -83,8 +83,10 @@ void finish(TypeScore& s, long matchedDetected, long matchedTruth)
     s.f1 = p + s.recall > 0.0 ? 2.0 * p * s.recall / (p + s.recall) : 0.0;
 }
 
-/// Share of lines that are closed or end on a line at both ends (see LineScore::closedness).
-double closednessOf(const std::vector<TypedPolyline>& lines, double step, double tol)
+/// Share of lines that are closed or end on a line at both ends (see LineScore::closedness);
+/// with `only`, of the lines of that type (their ends may lie on a line of any type).
+double closednessOf(const std::vector<TypedPolyline>& lines, double step, double tol,
+                    const LineType* only = nullptr)
 {
     if (lines.empty()) {
         return notDefined;
@@ -121,8 +123,13 @@ double closednessOf(const std::vector<TypedPolyline>& lines, double step, double
         return joined;
     };
     int good = 0;
+    int counted = 0;
     for (size_t l = 0; l < lines.size(); ++l) {
         const TypedPolyline& line = lines[l];
+        if (only && line.type != *only) {
+            continue;
+        }
+        ++counted;
         if (line.closed) {
             ++good;
             continue;
@@ -137,7 +144,7 @@ double closednessOf(const std::vector<TypedPolyline>& lines, double step, double
             ++good;
         }
     }
-    return static_cast<double>(good) / static_cast<double>(lines.size());
+    return counted > 0 ? static_cast<double>(good) / static_cast<double>(counted) : notDefined;
 }
 
 } // namespace
@@ -229,6 +236,8 @@ LineScore scoreLines(const std::vector<TypedPolyline>& detected,
         finish(s, matchedDetected, matchedTruth);
     }
     result.closedness = closednessOf(detected, step, tol);
+    const LineType sharp = LineType::Sharp;
+    result.sharpClosedness = closednessOf(detected, step, tol, &sharp);
     result.lineCount = static_cast<int>(detected.size());
     return result;
 }
@@ -284,6 +293,7 @@ LineScore scoreFlaggedPoints(const PointMatrix& flagged, const std::vector<Typed
         finish(s, matched, countNear(tru[t].points, flaggedGrid, tol));
     }
     result.closedness = notDefined;
+    result.sharpClosedness = notDefined;
     result.lineCount = 0;
     return result;
 }

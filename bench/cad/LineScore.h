@@ -78,6 +78,10 @@ struct LineScore
     /// sample of another line or of a part of the same line farther than twice the tolerance
     /// along it (a junction). NaN when there is no line.
     double closedness = 0.0;
+    /// The same share over the sharp lines only (their ends may lie on a line of any type: a
+    /// sharp edge ends on the boundary or where a fillet border begins). NaN when there is no
+    /// sharp line.
+    double sharpClosedness = 0.0;
     int lineCount = 0;
 };
 

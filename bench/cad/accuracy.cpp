@@ -566,11 +566,13 @@ LineScore meanScore(const std::vector<const Row*>& rows)
         }
         mean.types[static_cast<size_t>(t)] = {meanOf(p), meanOf(r), meanOf(f), 0, 0};
     }
-    std::vector<double> c;
+    std::vector<double> c, cs;
     for (const Row* row : rows) {
         c.push_back(row->score.closedness);
+        cs.push_back(row->score.sharpClosedness);
     }
     mean.closedness = meanOf(c);
+    mean.sharpClosedness = meanOf(cs);
     return mean;
 }
 
@@ -723,13 +725,14 @@ int run(const Arguments& args)
 
     std::vector<std::string> header = {"part", "noise", "detector"};
     header.insert(header.end(), scoreHeader.begin(), scoreHeader.end());
-    header.insert(header.end(), {"closed", "lines", "time s"});
+    header.insert(header.end(), {"closed", "sharp closed", "lines", "time s"});
     std::vector<std::vector<std::string>> table;
     for (const Row& r : rows) {
         std::vector<std::string> cells = {r.shape, r.noise, r.detector};
         const auto sc = scoreCells(r.score, r.available);
         cells.insert(cells.end(), sc.begin(), sc.end());
         cells.push_back(r.available && !r.perPoint ? fmt(r.score.closedness) : "-");
+        cells.push_back(r.available && !r.perPoint ? fmt(r.score.sharpClosedness) : "-");
         cells.push_back(r.available && !r.perPoint ? std::to_string(r.score.lineCount) : "-");
         cells.push_back(r.available ? fmt(r.seconds, 2) : "-");
         table.push_back(cells);
@@ -764,6 +767,7 @@ int run(const Arguments& args)
         const auto sc = scoreCells(m, available);
         cells.insert(cells.end(), sc.begin(), sc.end());
         cells.push_back(available && !perPoint ? fmt(m.closedness) : "-");
+        cells.push_back(available && !perPoint ? fmt(m.sharpClosedness) : "-");
         cells.push_back("-");
         cells.push_back("-");
         means.push_back(cells);

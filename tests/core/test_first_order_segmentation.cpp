@@ -2,7 +2,8 @@
 // First-order segmentation on shapes whose answer is known: a plane and a fillet-rounded cube
 // are one smooth patch each; a cube is six faces with candidates only along its edges; a
 // ridge of 35 degrees separates its two faces; the spread limit and the scale of the excess
-// follow the noise.
+// follow the noise; a noisy ridge of 45 degrees keeps its points as candidates although the
+// growing leaks across it, while a noisy cylinder and plane gain none.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -194,6 +195,99 @@ TEST(FirstOrderSegmentation, RidgeOfThirtyFiveDegreesSeparatesItsFaces)
     EXPECT_EQ(roofClusters.size(), 2u);
 }
 
+namespace {
+
+/// Noise of sigma spacings along the true normals (the spacing measured on the clean cloud).
+void addNoise(shapes::Sample& s, double sigma, unsigned seed)
+{
+    shapes::addNormalNoise(s, sigma * meanSpacing(nearestNeighbours(s.points)), seed);
+}
+
+} // namespace
+
+TEST(FirstOrderSegmentation, NoisyRidgeOfFortyFiveDegreesKeepsItsPointsAsCandidates)
+{
+    // A house-shaped prism 50 wide and 60 long whose ridge turns the normal by 45 degrees,
+    // noise of 0.3 spacing. Somewhere along the ridge the growing leaks across it and the two
+    // roof faces become one cluster, so the cluster rule alone lets most ridge points join a
+    // face (only those with no growing neighbour of similar normal stay). The faces of flat
+    // points do not leak: the roof stays two faces, and every point that cannot grow between
+    // them stays a candidate, at least twice as many and at least 40 % of the ridge (enough
+    // for the graph to run a line through).
+    const double w = 25.0, pi = 3.14159265358979323846;
+    const double ridgeY = 10.0 + w * std::tan(22.5 * pi / 180.0);
+    for (unsigned seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        shapes::Sample house = shapes::prism(
+            {{-w, -15.0}, {w, -15.0}, {w, 10.0}, {0.0, ridgeY}, {-w, 10.0}}, 60.0, 1.0, seed);
+        addNoise(house, 0.3, seed + 20);
+        const Prepared p = prepare(house);
+        const FirstOrderSegmentation seg = segment(house, p);
+        FirstOrderSegmentationOptions clusterRuleOnly;
+        clusterRuleOnly.shallowCreaseAngle = 0.0;
+        const FirstOrderSegmentation without = segmentByNormals(
+            house.points, p.normals.normals, p.neighbours, p.spacing, clusterRuleOnly);
+
+        std::set<int> roofFaces, roofClustersWithout;
+        int roof = 0, notFlat = 0, onRidge = 0, with = 0, alone = 0;
+        for (Eigen::Index i = 0; i < house.size(); ++i) {
+            const Eigen::RowVector3d x = house.points.row(i);
+            if (std::abs(x.z()) > 25.0) {
+                continue; // away from the caps
+            }
+            if ((house.part[i] == 2 || house.part[i] == 3) && std::abs(x.x()) > 8.0 &&
+                std::abs(x.x()) < 16.0) {
+                ++roof;
+                if (seg.face[i] < 0) {
+                    ++notFlat;
+                } else {
+                    roofFaces.insert(seg.face[i]);
+                }
+                roofClustersWithout.insert(without.cluster[i]);
+            }
+            if (std::hypot(x.x(), x.y() - ridgeY) < p.spacing) {
+                ++onRidge;
+                with += seg.isCandidate(i) ? 1 : 0;
+                alone += without.isCandidate(i) ? 1 : 0;
+            }
+        }
+        EXPECT_EQ(roofFaces.size(), 2u);
+        // Noise alone spreads 5 % of a plane's normals beyond noiseSpreadTail.
+        EXPECT_LE(notFlat, 0.1 * roof);
+        EXPECT_EQ(roofClustersWithout.size(), 1u) << "the growing did not leak this time";
+        ASSERT_GT(onRidge, 50);
+        EXPECT_GE(with, 0.4 * onRidge);
+        EXPECT_GE(with, 2 * alone);
+    }
+}
+
+TEST(FirstOrderSegmentation, NoisyCylinderAndPlaneGainNoCandidates)
+{
+    // A cylinder of radius 12 spacings and a plane, noise of 0.3 and 0.5 spacing: where a
+    // point cannot grow, the growing points around it join it all round (no two faces of flat
+    // points meet there at a crease), so the shallow-crease rule keeps none as a candidate.
+    for (double sigma : {0.3, 0.5}) {
+        SCOPED_TRACE("noise sigma " + std::to_string(sigma));
+        shapes::Sample tube = shapes::cylinder(12.0, 40.0, 1.0, 4);
+        addNoise(tube, sigma, 5);
+        shapes::Sample plane = shapes::plane(40.0, 1.0, 6);
+        addNoise(plane, sigma, 7);
+        for (const shapes::Sample* s : {&tube, &plane}) {
+            const Prepared p = prepare(*s);
+            FirstOrderSegmentationOptions off;
+            off.shallowCreaseAngle = 0.0;
+            const FirstOrderSegmentation with = segment(*s, p);
+            const FirstOrderSegmentation without =
+                segmentByNormals(s->points, p.normals.normals, p.neighbours, p.spacing, off);
+            int added = 0;
+            for (Eigen::Index i = 0; i < s->size(); ++i) {
+                added += with.isCandidate(i) && !without.isCandidate(i) ? 1 : 0;
+            }
+            EXPECT_EQ(added, 0);
+        }
+    }
+}
+
 TEST(FirstOrderSegmentation, SameInputSameClusters)
 {
     const shapes::Sample cube = shapes::cube(20.0, 1.0, 7);
@@ -202,6 +296,7 @@ TEST(FirstOrderSegmentation, SameInputSameClusters)
     const FirstOrderSegmentation b = segment(cube, p);
     EXPECT_EQ(a.cluster, b.cluster);
     EXPECT_EQ(a.smallCluster, b.smallCluster);
+    EXPECT_EQ(a.face, b.face);
 }
 
 TEST(FirstOrderSegmentation, BadInputThrows)
@@ -226,5 +321,20 @@ TEST(FirstOrderSegmentation, BadInputThrows)
     negative.noiseSpreadFactor = -1.0;
     EXPECT_THROW(
         segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, negative),
+        std::invalid_argument);
+    FirstOrderSegmentationOptions wideShallow;
+    wideShallow.shallowCreaseAngle = 120.0;
+    EXPECT_THROW(
+        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, wideShallow),
+        std::invalid_argument);
+    FirstOrderSegmentationOptions fewFacePoints;
+    fewFacePoints.minFacePoints = 2;
+    EXPECT_THROW(
+        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, fewFacePoints),
+        std::invalid_argument);
+    FirstOrderSegmentationOptions noReach;
+    noReach.creaseLineReach = 0.0;
+    EXPECT_THROW(
+        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, noReach),
         std::invalid_argument);
 }

@@ -132,6 +132,26 @@ TEST(LineScore, LineEndingOnAnotherLineIsJoined)
     EXPECT_NEAR(s.closedness, 2.0 / 3.0, 1e-12);
 }
 
+TEST(LineScore, SharpClosednessCountsSharpLinesEndingOnLinesOfAnyType)
+{
+    // A sharp square; a sharp line from it to a smooth square (both ends joined, one on a
+    // smooth line); a smooth stub with a free end; a sharp stub with a free end.
+    TypedPolyline inner = square(LineType::Sharp, 20.0);
+    TypedPolyline outer = square(LineType::Smooth, 60.0);
+    outer.points.rowwise() -= Eigen::RowVector3d(20, 20, 0);
+    const TypedPolyline bridge = segment(LineType::Sharp, {10, 0, 0}, {10, -20, 0}, 5);
+    const TypedPolyline smoothStub = segment(LineType::Smooth, {0, 10, 0}, {-10, 10, 0}, 5);
+    const TypedPolyline sharpStub = segment(LineType::Sharp, {20, 10, 0}, {30, 10, 0}, 5);
+    LineScore s = scoreLines({inner, outer, bridge, smoothStub}, {inner, outer}, options());
+    EXPECT_DOUBLE_EQ(s.sharpClosedness, 1.0);
+    EXPECT_NEAR(s.closedness, 3.0 / 4.0, 1e-12);
+    s = scoreLines({inner, outer, bridge, smoothStub, sharpStub}, {inner, outer}, options());
+    EXPECT_NEAR(s.sharpClosedness, 2.0 / 3.0, 1e-12);
+    // No sharp line: undefined.
+    s = scoreLines({outer}, {outer}, options());
+    EXPECT_TRUE(std::isnan(s.sharpClosedness));
+}
+
 TEST(LineScore, OpenLineThatReturnsToItsStartIsJoined)
 {
     // A square given as an open polyline whose last vertex repeats the first.
