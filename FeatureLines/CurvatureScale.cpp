@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "FeatureLines/MortonCode.h"
+#include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
 
@@ -22,7 +22,7 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     }
     const Eigen::RowVector3d low = P.colwise().minCoeff();
     const Eigen::RowVector3d cells = ((P.colwise().maxCoeff() - low) / cell).array().floor();
-    if (!(cells.maxCoeff() < static_cast<double>(1 << 21))) { // mortonCode's 21 bits an axis
+    if (!(cells.maxCoeff() < static_cast<double>(1 << 21))) { // mortonKey's 21 bits an axis
         throw std::invalid_argument("grid centroids: the cloud spans too many cells");
     }
     // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
@@ -33,7 +33,7 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
         const auto c = [&](int d) {
             return static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
         };
-        keyed[static_cast<size_t>(i)] = {mortonCode(c(0), c(1), c(2)), static_cast<int>(i)};
+        keyed[static_cast<size_t>(i)] = {mortonKey(c(0), c(1), c(2)), static_cast<int>(i)};
     }
     std::sort(keyed.begin(), keyed.end());
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "FeatureLines/CloudIO.h"
-#include "FeatureLines/MortonCode.h"
+#include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
 
@@ -25,38 +25,12 @@ void report(const std::function<bool(double, const std::string&)>& progress, dou
     }
 }
 
-/// Sorts `keyed` by key, then each run of equal keys by `less`: a radix sort, 11 bits of the
-/// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
-/// points), passes in which every key has the same digit skipped.
+/// Sorts `keyed` by key, then each run of equal keys by `less`.
 template <class Less>
 void sortByKey(std::vector<std::pair<std::uint64_t, int>>& keyed, const Less& less)
 {
-    constexpr int bits = 11, passes = 6; // 66 bits cover the 63 of the key
-    constexpr std::size_t buckets = std::size_t(1) << bits;
+    sortByMortonKey(keyed);
     const std::size_t n = keyed.size();
-    std::vector<std::size_t> count(passes * buckets, 0);
-    for (const auto& item : keyed) {
-        for (int p = 0; p < passes; ++p) {
-            ++count[p * buckets + ((item.first >> (bits * p)) & (buckets - 1))];
-        }
-    }
-    std::vector<std::pair<std::uint64_t, int>> other(n);
-    for (int p = 0; p < passes && n > 0; ++p) {
-        std::size_t* start = count.data() + p * buckets;
-        if (start[(keyed[0].first >> (bits * p)) & (buckets - 1)] == n) {
-            continue; // one digit for all: the order stays
-        }
-        std::size_t at = 0;
-        for (std::size_t b = 0; b < buckets; ++b) {
-            const std::size_t c = start[b];
-            start[b] = at;
-            at += c;
-        }
-        for (const auto& item : keyed) {
-            other[start[(item.first >> (bits * p)) & (buckets - 1)]++] = item;
-        }
-        keyed.swap(other);
-    }
     for (std::size_t first = 0; first < n;) {
         std::size_t last = first + 1;
         while (last < n && keyed[last].first == keyed[first].first) {
@@ -81,16 +55,11 @@ void sortByKey(std::vector<std::pair<std::uint64_t, int>>& keyed, const Less& le
 PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputToPoint)
 {
     const Eigen::Index n = P.rows();
-    const Eigen::RowVector3d low = P.colwise().minCoeff();
-    const double extent = (P.colwise().maxCoeff() - low).maxCoeff();
-    const double scale = extent > 0.0 ? 2097151.0 / extent : 0.0; // 2^21 - 1 steps
+    const MortonGrid grid(P);
     std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        const auto q = [&](int d) {
-            return static_cast<std::uint64_t>((P(i, d) - low[d]) * scale);
-        };
-        keyed[static_cast<size_t>(i)] = {mortonCode(q(0), q(1), q(2)), static_cast<int>(i)};
+        keyed[static_cast<size_t>(i)] = {grid.key(P, i), static_cast<int>(i)};
     }
     // Coordinates compare as numbers: -0.0 equals 0.0, and duplicates compare equal, so which of
     // them comes first does not matter.

@@ -4,110 +4,150 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <nanoflann.hpp>
 #include <omp.h>
 
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
 
 namespace {
-
-/// nanoflann's dataset interface over a row-major #P by 3 array (x y z contiguous). The
-/// pointer is switched from the input to its copy in tree order once the tree is built.
-struct TreePoints
-{
-    const double* xyz = nullptr;
-    std::size_t count = 0;
-
-    std::size_t kdtree_get_point_count() const { return count; }
-    double kdtree_get_pt(std::uint32_t i, std::size_t d) const { return xyz[3 * i + d]; }
-    template <class BoundingBox> bool kdtree_get_bbox(BoundingBox&) const { return false; }
-};
-
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, TreePoints, double, std::uint32_t>, TreePoints, 3,
-    std::uint32_t>;
-
-/// Points per kd-tree leaf (at most). Each leaf is one batch of queries (below): small leaves
-/// give a tight candidate ball, large ones share each tree search among more queries. 6 to 16
-/// cost the same within the noise on a 1M-point scan-like cloud (leaves then hold 8 points on
-/// average).
-constexpr std::size_t leafSize = 12;
-
-/// A leaf whose candidate ball holds more than this many points per query of the leaf is
-/// spread too wide to batch (an outlier next to a dense cluster); its points are then searched
-/// one by one. Scanning a candidate costs about 1/100 of a tree search; on a scan-like cloud
-/// 1% of the leaves exceed 100.
-constexpr std::size_t batchCandidatesPerQuery = 100;
 
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
 }
 
-/// nanoflann result set collecting every point closer than a radius, unsorted, up to a cap,
-/// and counting those closer than an inner radius.
-class BallResultSet
+/// The occupied cells of one level of the keys' octree (cubes 2^level steps wide, see
+/// MortonGrid), in key order: each cell's code (key >> 3 level) and its run of rows, with a
+/// hash table from code to cell.
+class Cells
 {
 public:
-    BallResultSet(double squaredRadius, double squaredInnerRadius, std::size_t cap,
-                  std::vector<std::uint32_t>& found)
-        : squaredRadius_(squaredRadius), squaredInnerRadius_(squaredInnerRadius), cap_(cap),
-          found_(found)
+    Cells(const std::vector<std::uint64_t>& keys, int level)
     {
-        found_.clear();
+        for (std::size_t j = 0; j < keys.size(); ++j) {
+            const std::uint64_t code = keys[j] >> (3 * level);
+            if (j == 0 || code != codes_.back()) {
+                codes_.push_back(code);
+                first_.push_back(static_cast<int>(j));
+            }
+        }
+        first_.push_back(static_cast<int>(keys.size()));
+        std::size_t size = 16;
+        while (size < 2 * codes_.size()) {
+            size *= 2;
+        }
+        mask_ = size - 1;
+        slots_.assign(size, empty);
+        cellOfSlot_.assign(size, -1);
+        for (std::size_t c = 0; c < codes_.size(); ++c) {
+            std::size_t h = slot(codes_[c]);
+            while (slots_[h] != empty) {
+                h = (h + 1) & mask_;
+            }
+            slots_[h] = codes_[c];
+            cellOfSlot_[h] = static_cast<int>(c);
+        }
     }
-    double worstDist() const { return squaredRadius_; }
-    bool full() const { return true; }
-    bool addPoint(double squaredDistance, std::uint32_t index)
+    long count() const { return static_cast<long>(codes_.size()); }
+    int first(long cell) const { return first_[static_cast<std::size_t>(cell)]; }
+    int end(long cell) const { return first_[static_cast<std::size_t>(cell) + 1]; }
+    /// The cell of a code, or -1 when no point lies in it.
+    int find(std::uint64_t code) const
     {
-        found_.push_back(index);
-        inner_ += squaredDistance <= squaredInnerRadius_;
-        overflow_ = found_.size() > cap_;
-        return !overflow_; // stops the search once over the cap
+        for (std::size_t h = slot(code);; h = (h + 1) & mask_) {
+            if (slots_[h] == code) {
+                return cellOfSlot_[h];
+            }
+            if (slots_[h] == empty) {
+                return -1;
+            }
+        }
     }
-    bool overflow() const { return overflow_; }
-    std::size_t inner() const { return inner_; }
 
 private:
-    double squaredRadius_;
-    double squaredInnerRadius_;
-    std::size_t cap_;
-    std::vector<std::uint32_t>& found_;
-    std::size_t inner_ = 0;
-    bool overflow_ = false;
-};
-
-/// A point seen from one query.
-struct Candidate
-{
-    double squaredDistance;
-    int index; // in P
-};
-
-/// Nearest first; the index breaks ties, so the answer does not depend on the order in which
-/// candidates arrive (nor on the thread count).
-bool closer(const Candidate& a, const Candidate& b)
-{
-    return a.squaredDistance < b.squaredDistance ||
-           (a.squaredDistance == b.squaredDistance && a.index < b.index);
-}
-
-void collectLeaves(const KdTree::Node* node, std::vector<const KdTree::Node*>& leaves)
-{
-    if (node->child1 == nullptr && node->child2 == nullptr) {
-        leaves.push_back(node);
-        return;
+    static constexpr std::uint64_t empty = ~std::uint64_t(0); // no code has all 64 bits set
+    std::size_t slot(std::uint64_t code) const
+    {
+        return static_cast<std::size_t>((code * 0x9E3779B97F4A7C15ULL) >> 20) & mask_;
     }
-    collectLeaves(node->child1, leaves);
-    collectLeaves(node->child2, leaves);
+    std::vector<std::uint64_t> codes_;
+    std::vector<int> first_;
+    std::vector<std::uint64_t> slots_;
+    std::vector<int> cellOfSlot_;
+    std::size_t mask_ = 0;
+};
+
+/// Candidates of one query: squared distances and indices in P.
+struct Candidates
+{
+    std::vector<double> distance;
+    std::vector<float> rounded;
+    std::vector<int> index;
+
+    void reserve(std::size_t n)
+    {
+        if (distance.size() < n) {
+            const std::size_t size = std::max(n, 2 * distance.size());
+            distance.resize(size);
+            rounded.resize(size);
+            index.resize(size);
+        }
+    }
+};
+
+/// Writes the k nearest of the first `count` candidates (at least k of them, every point at
+/// least as close as the k-th among them), nearest first, the index breaking ties, so the
+/// answer does not depend on the order in which candidates were found (nor on the thread
+/// count). Each candidate goes to its rank, counted branch-free: a comparison sort of about
+/// 1.2 (k + 1) values mispredicts every other branch. The count runs on the distances rounded
+/// to float, four at a time: rounding keeps their order (a smaller rounded value comes from a
+/// smaller distance), so only candidates whose rounded distances are equal are compared
+/// exactly.
+void storeNearest(Candidates& c, std::size_t count, int k, int* indices, double* distances)
+{
+    for (std::size_t a = 0; a < count; ++a) {
+        c.rounded[a] = static_cast<float>(c.distance[a]);
+    }
+    for (std::size_t a = 0; a < count; ++a) {
+        const double da = c.distance[a];
+        const float fa = c.rounded[a];
+        const int ia = c.index[a];
+        int rank = 0, equal = 0;
+        for (std::size_t b = 0; b < count; ++b) { // vectorised
+            rank += c.rounded[b] < fa;
+            equal += c.rounded[b] == fa;
+        }
+        if (equal > 1) { // another candidate than a itself
+            for (std::size_t b = 0; b < count; ++b) {
+                rank += (c.rounded[b] == fa) &
+                        ((c.distance[b] < da) | ((c.distance[b] == da) & (c.index[b] < ia)));
+            }
+        }
+        if (rank < k) {
+            indices[rank] = ia;
+            distances[rank] = da;
+        }
+    }
 }
+
+/// Mean points per cell of the level the search runs on, per neighbour asked for. On a
+/// surface a cell of 0.75 (k + 1) points is about 1.5 times as wide as the k-th neighbour's
+/// distance (sqrt((k + 1) / pi) spacings), so the 27 cells around a point's cell hold its
+/// neighbours; levels come in factors of 4 of points per cell, so cells are 1.5 to 3 times
+/// that distance wide.
+constexpr double pointsPerCellPerNeighbour = 0.75;
+
+/// The radius a query searches first, x the k-th neighbour's distance of the query before it
+/// (points come in spatial order, so the two are close): 1.1 holds about 1.2 k points and
+/// falls short for about one query in a thousand, which then searches again farther.
+constexpr double radiusGuess = 1.1;
 
 } // namespace
 
@@ -130,225 +170,275 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     checkFinite(P, "point cloud");
 
     const Eigen::Index n = P.rows();
-    TreePoints points{P.data(), static_cast<std::size_t>(n)};
-    KdTree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(leafSize));
-
-    // The searches run on a copy Q of the points in the tree's leaf order: the points of a
-    // leaf, and of neighbouring leaves, are then neighbours in memory too. This halves the
-    // time on a cloud stored in scan order and avoids a further factor of two on a cloud
-    // stored in random order. The tree itself stays valid with Q as its data set and the
-    // identity as its index permutation. original[j] is the index in P of Q's row j.
-    const std::vector<std::uint32_t> original = tree.vAcc;
-    PointMatrix Q(n, 3);
-#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index j = 0; j < n; ++j) {
-        Q.row(j) = P.row(original[j]);
-    }
-    points.xyz = Q.data();
-    for (std::size_t j = 0; j < tree.vAcc.size(); ++j) {
-        tree.vAcc[j] = static_cast<std::uint32_t>(j);
-    }
-    std::vector<const KdTree::Node*> leaves;
-    collectLeaves(tree.root_node, leaves);
-
+    const int threads = threadCount(options.threads);
     Neighbourhoods result;
     result.indices.resize(n, k);
     result.squaredDistances.resize(n, k);
-
-    // The points of one leaf are close together, so they share their neighbours. If the
-    // ball of radius r0 around the leaf's most central point q0 holds k + 1 points, those lie
-    // within r0 + |q - q0| of any q of the leaf, so the k nearest others of q lie in the ball
-    // around q0 of radius r0 + 2 max|q - q0|. One radius search fetches that ball and each
-    // query of the leaf scans it exactly: one tree descent per leaf instead of one per point.
-    // r0 is guessed from the previous leaf of the thread (leaves come in spatial order) and
-    // checked by counting the points within it; a kNN search from q0 gives it otherwise.
-    const std::size_t wanted = static_cast<std::size_t>(k) + 1;
-#pragma omp parallel num_threads(threadCount(options.threads))
-    {
-        std::vector<std::uint32_t> found(wanted);
-        std::vector<double> foundDistances(wanted);
-        std::vector<std::uint32_t> ball;
-        std::vector<float> cx, cy, cz, cd;
-        std::vector<std::uint32_t> passed;
-        std::vector<Candidate> near(wanted);
-        std::vector<double> nearDistance;
-        std::vector<float> nearRounded;
-        std::vector<int> nearIndex;
-        double radiusGuess = 0.0;
-        // The k nearest of point i are the first k of `near`, sorted.
-        const auto store = [&](std::uint32_t i) {
-            for (int c = 0; c < k; ++c) {
-                result.indices(i, c) = near[c].index;
-                result.squaredDistances(i, c) = near[c].squaredDistance;
-            }
-        };
-#pragma omp for schedule(dynamic, 64)
-        for (std::size_t leaf = 0; leaf < leaves.size(); ++leaf) {
-            const auto& range = leaves[leaf]->node_type.lr;
-            const Eigen::Index first = static_cast<Eigen::Index>(range.left);
-            const Eigen::Index last = static_cast<Eigen::Index>(range.right);
-            const std::size_t cap =
-                batchCandidatesPerQuery * static_cast<std::size_t>(last - first);
-
-            const Eigen::RowVector3d centre =
-                Q.middleRows(first, last - first).colwise().sum() / double(last - first);
-            Eigen::Index q0 = first;
-            double best = std::numeric_limits<double>::infinity();
-            for (Eigen::Index j = first; j < last; ++j) {
-                const double d = (Q.row(j) - centre).squaredNorm();
-                if (d < best) {
-                    best = d;
-                    q0 = j;
+    const MortonGrid grid(P);
+    if (!(grid.scale > 0.0)) {
+        // Every point coincides: the neighbours of each are the others of lowest index.
+        for (Eigen::Index i = 0; i < n; ++i) {
+            for (int c = 0, j = 0; c < k; ++j) {
+                if (j != i) {
+                    result.indices(i, c) = j;
+                    result.squaredDistances(i, c) = 0.0;
+                    ++c;
                 }
             }
-            double spread = 0.0;
-            for (Eigen::Index j = first; j < last; ++j) {
-                spread = std::max(spread, (Q.row(j) - Q.row(q0)).squaredNorm());
-            }
-            spread = std::sqrt(spread);
+        }
+        return result;
+    }
 
-            // A relative margin for rounding; the smallest positive bound still admits the
-            // zero distances of a leaf of coincident points.
-            const auto squared = [](double r) {
-                return std::max(r * r * (1.0 + 1e-9), std::numeric_limits<double>::denorm_min());
-            };
-            double r0 = radiusGuess;
-            bool batched = false;
-            bool overflow = false;
-            if (r0 > 0.0) {
-                BallResultSet inBall(squared(r0 + 2.0 * spread), squared(r0), cap, ball);
-                tree.findNeighbors(inBall, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
-                overflow = inBall.overflow();
-                batched = !overflow && inBall.inner() >= wanted;
-                if (batched) {
-                    // Aim at about 1.3 (k + 1) points within the guess: the area, and so the
-                    // count, grows with the square of the radius on a surface.
-                    const double ratio = 1.3 * double(wanted) / double(inBall.inner());
-                    radiusGuess = r0 * std::sqrt(std::clamp(ratio, 0.25, 4.0));
-                }
-            }
-            if (!batched && !overflow) {
-                nanoflann::KNNResultSet<double, std::uint32_t, std::uint32_t> nearest(wanted);
-                nearest.init(found.data(), foundDistances.data());
-                tree.findNeighbors(nearest, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
-                r0 = std::sqrt(foundDistances[k]);
-                radiusGuess = r0 * std::sqrt(1.3);
-                BallResultSet inBall(squared(r0 + 2.0 * spread), squared(r0), cap, ball);
-                tree.findNeighbors(inBall, Q.row(q0).data(), nanoflann::SearchParams(0, 0.0f));
-                overflow = inBall.overflow();
-            }
+    // The points in key order: the cloud itself when it comes in that order (analyseCloud's
+    // canonical order), else a copy. original[j] is the row of P of row j of Q.
+    std::vector<std::uint64_t> keys(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        keys[static_cast<std::size_t>(i)] = grid.key(P, i);
+    }
+    const bool sorted = std::is_sorted(keys.begin(), keys.end());
+    std::vector<int> original;
+    PointMatrix copy;
+    if (!sorted) {
+        std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<std::size_t>(n));
+        for (Eigen::Index i = 0; i < n; ++i) {
+            keyed[static_cast<std::size_t>(i)] = {keys[static_cast<std::size_t>(i)],
+                                                  static_cast<int>(i)};
+        }
+        sortByMortonKey(keyed);
+        original.resize(static_cast<std::size_t>(n));
+        copy.resize(n, 3);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+        for (Eigen::Index j = 0; j < n; ++j) {
+            keys[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].first;
+            original[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].second;
+            copy.row(j) = P.row(keyed[static_cast<std::size_t>(j)].second);
+        }
+    }
+    const PointMatrix& Q = sorted ? P : copy;
+    const auto rowOf = [&](Eigen::Index j) {
+        return sorted ? static_cast<int>(j) : original[static_cast<std::size_t>(j)];
+    };
 
-            if (overflow) {
-                // Too spread for a batch: an exact kNN search per point.
-                for (Eigen::Index j = first; j < last; ++j) {
-                    nanoflann::KNNResultSet<double, std::uint32_t, std::uint32_t> own(wanted);
-                    own.init(found.data(), foundDistances.data());
-                    tree.findNeighbors(own, Q.row(j).data(), nanoflann::SearchParams(0, 0.0f));
-                    // The point itself is dropped by index (its exact duplicates stay); if
-                    // k + 1 others tie at distance 0 it may be absent, then the k + 1 are
-                    // sorted and the farthest dropped.
-                    std::size_t count = 0;
-                    for (std::size_t c = 0; c < wanted; ++c) {
-                        if (found[c] != static_cast<std::uint32_t>(j)) {
-                            near[count++] = {(Q.row(found[c]) - Q.row(j)).squaredNorm(),
-                                             static_cast<int>(original[found[c]])};
+    // The level: the finest whose cells hold the wanted mean number of points. Consecutive
+    // keys first differ at bit b: a new cell starts there on every level up to b / 3.
+    std::vector<long> newCells(mortonBitsPerAxis + 1, 0);
+    for (std::size_t j = 1; j < keys.size(); ++j) {
+        const std::uint64_t differ = keys[j] ^ keys[j - 1];
+        if (differ != 0) {
+            ++newCells[static_cast<std::size_t>((63 - __builtin_clzll(differ)) / 3)];
+        }
+    }
+    int level = 1;
+    for (long cells = 1 + std::accumulate(newCells.begin() + 1, newCells.end(), 0L);
+         level < mortonBitsPerAxis &&
+         double(n) < pointsPerCellPerNeighbour * (k + 1) * double(cells);
+         ++level) {
+        cells -= newCells[static_cast<std::size_t>(level)];
+    }
+    const Cells cells(keys, level);
+    // Each cell is cut into 8 sub-cells (one level finer), the unit of the scan: a query looks
+    // at the sub-cells its search box overlaps among the 6 x 6 x 6 of the 27 cells around its
+    // own.
+    constexpr int width = 6;
+    const int subLevel = level - 1;
+    const double subSteps = double(std::uint64_t(1) << subLevel);
+    const std::int64_t lastCell = (std::int64_t(1) << (mortonBitsPerAxis - level)) - 1;
+    const std::int64_t lastSub = (std::int64_t(1) << (mortonBitsPerAxis - subLevel)) - 1;
+    // Margins for rounding in steps: positions are exact to about 1e-9 step.
+    constexpr double stepMargin = 1e-3;
+    const double oneStep = 1.0 / grid.scale;
+
+    // Exact for any query, at any level from `level` up: the points of the 27 cells around the
+    // query's cell, when the k-th nearest among them is closer than the block's faces;
+    // otherwise the next level. The top level's block is the whole cloud.
+    const auto searchWide = [&](Eigen::Index j, Candidates& c, std::vector<double>& scratch) {
+        double u[3];
+        std::int64_t q[3];
+        for (int d = 0; d < 3; ++d) {
+            u[d] = grid.steps(Q(j, d), d);
+            q[d] = static_cast<std::int64_t>(u[d]);
+        }
+        for (int l = level;; ++l) {
+            const std::int64_t top = (std::int64_t(1) << (mortonBitsPerAxis - l)) - 1;
+            std::int64_t cc[3];
+            for (int d = 0; d < 3; ++d) {
+                cc[d] = q[d] >> l;
+            }
+            std::size_t count = 0;
+            for (int dz = -1; dz <= 1; ++dz) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                        if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
+                            continue;
+                        }
+                        const std::uint64_t code =
+                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z));
+                        const auto from =
+                            std::lower_bound(keys.begin(), keys.end(), code << (3 * l));
+                        const auto to = std::lower_bound(from, keys.end(), (code + 1) << (3 * l));
+                        for (auto at = from; at != to; ++at) {
+                            const Eigen::Index r = at - keys.begin();
+                            if (r == j) {
+                                continue;
+                            }
+                            c.reserve(count + 1);
+                            c.distance[count] = (Q.row(r) - Q.row(j)).squaredNorm();
+                            c.index[count] = rowOf(r);
+                            ++count;
                         }
                     }
-                    std::sort(near.begin(), near.begin() + count, closer);
-                    store(original[j]);
                 }
+            }
+            if (count < static_cast<std::size_t>(k)) {
                 continue;
             }
-
-            // Candidates relative to q0 in float for a vectorised first cut; every candidate
-            // that passes it is then measured exactly in double.
-            const std::size_t m = ball.size();
-            cx.resize(m);
-            cy.resize(m);
-            cz.resize(m);
-            cd.resize(m);
-            passed.resize(m);
-            near.resize(std::max(m, wanted));
-            nearDistance.resize(m);
-            nearRounded.resize(m);
-            nearIndex.resize(m);
-            for (std::size_t c = 0; c < m; ++c) {
-                cx[c] = static_cast<float>(Q(ball[c], 0) - Q(q0, 0));
-                cy[c] = static_cast<float>(Q(ball[c], 1) - Q(q0, 1));
-                cz[c] = static_cast<float>(Q(ball[c], 2) - Q(q0, 2));
+            scratch.assign(c.distance.begin(), c.distance.begin() + count);
+            std::nth_element(scratch.begin(), scratch.begin() + (k - 1), scratch.end());
+            const double kth = scratch[static_cast<std::size_t>(k - 1)];
+            // Every point within the k-th distance lies in the block.
+            const double reach = std::sqrt(kth) * grid.scale * (1.0 + 1e-9) + stepMargin;
+            bool inside = true;
+            for (int d = 0; d < 3; ++d) {
+                inside = inside &&
+                         (cc[d] == 0 || std::floor(u[d] - reach) >= double((cc[d] - 1) << l)) &&
+                         (cc[d] == top || std::floor(u[d] + reach) < double((cc[d] + 2) << l));
             }
-            for (Eigen::Index j = first; j < last; ++j) {
-                const float x = static_cast<float>(Q(j, 0) - Q(q0, 0));
-                const float y = static_cast<float>(Q(j, 1) - Q(q0, 1));
-                const float z = static_cast<float>(Q(j, 2) - Q(q0, 2));
-                for (std::size_t c = 0; c < m; ++c) { // vectorised
-                    const float dx = cx[c] - x, dy = cy[c] - y, dz = cz[c] - z;
-                    cd[c] = dx * dx + dy * dy + dz * dz;
-                }
-                const auto countWithin = [&](float cut) {
-                    std::size_t count = 0;
-                    for (std::size_t c = 0; c < m; ++c) { // vectorised
-                        count += cd[c] <= cut;
-                    }
-                    return count;
-                };
-                // No neighbour of q lies farther than r0 + |q - q0|: about 3 (k + 1)
-                // candidates on a surface. The float cut is narrowed towards 1.25 (k + 1) (the
-                // count grows like the squared distance on a surface), kept only if k + 1
-                // points, q included, stay inside it. The cut keeps a relative margin of 1e-4:
-                // a true neighbour and q lie within twice the bound of q0, so float rounding of
-                // their offsets is 2^-24 of the bound, and narrowing shrinks the cut by at most
-                // the candidate cap over k + 1, which keeps that rounding below 1e-5 of it.
-                const double bound = r0 + (Q.row(j) - Q.row(q0)).norm();
-                const double squaredBound = bound * bound * (1.0 + 1e-9);
-                float cut = static_cast<float>(squaredBound * (1.0 + 1e-4));
-                const float narrower = cut * (1.25f * float(wanted) / float(countWithin(cut)));
-                if (countWithin(narrower * (1.0f - 1e-4f)) >= wanted) {
-                    cut = narrower;
-                }
-                std::size_t passing = 0;
-                for (std::size_t c = 0; c < m; ++c) { // branch-free compaction
-                    passed[passing] = static_cast<std::uint32_t>(c);
-                    passing += cd[c] <= cut;
-                }
-                std::size_t count = 0;
-                for (std::size_t c = 0; c < passing; ++c) {
-                    const std::uint32_t candidate = ball[passed[c]];
-                    const double d2 = (Q.row(candidate) - Q.row(j)).squaredNorm();
-                    if (d2 <= squaredBound && candidate != static_cast<std::uint32_t>(j)) {
-                        nearDistance[count] = d2;
-                        nearRounded[count] = static_cast<float>(d2);
-                        nearIndex[count] = static_cast<int>(original[candidate]);
-                        ++count;
-                    }
-                }
-                // count >= k: the k + 1 points within r0 of q0, but q, are within the bound.
-                // Each candidate goes to its rank in the closer() order, counted branch-free:
-                // a comparison sort of about 1.25 (k + 1) values mispredicts every other branch.
-                // The count runs on the distances rounded to float, four at a time: rounding
-                // keeps their order (a smaller rounded value comes from a smaller distance), so
-                // only candidates whose rounded distances are equal are compared exactly.
-                const Eigen::Index i = original[j];
-                for (std::size_t a = 0; a < count; ++a) {
-                    const double da = nearDistance[a];
-                    const float fa = nearRounded[a];
-                    const int ia = nearIndex[a];
-                    int rank = 0, equal = 0;
-                    for (std::size_t b = 0; b < count; ++b) { // vectorised
-                        rank += nearRounded[b] < fa;
-                        equal += nearRounded[b] == fa;
-                    }
-                    if (equal > 1) { // another candidate than a itself
-                        for (std::size_t b = 0; b < count; ++b) {
-                            rank += (nearRounded[b] == fa) &
-                                    ((nearDistance[b] < da) |
-                                     ((nearDistance[b] == da) & (nearIndex[b] < ia)));
+            if (!inside) {
+                continue;
+            }
+            std::size_t kept = 0;
+            for (std::size_t a = 0; a < count; ++a) {
+                c.distance[kept] = c.distance[a];
+                c.index[kept] = c.index[a];
+                kept += c.distance[a] <= kth;
+            }
+            storeNearest(c, kept, k, &result.indices(rowOf(j), 0),
+                         &result.squaredDistances(rowOf(j), 0));
+            return kth;
+        }
+    };
+
+#pragma omp parallel num_threads(threads)
+    {
+        struct Run
+        {
+            int first = 0, end = 0;
+        };
+        std::vector<Run> table(width * width * width);
+        Candidates candidates;
+        std::vector<double> scratch;
+        double guess = 0.0;
+#pragma omp for schedule(dynamic, 16)
+        for (long cell = 0; cell < cells.count(); ++cell) {
+            // The runs of rows of the sub-cells of the 27 cells around this one.
+            std::int64_t cc[3];
+            for (int d = 0; d < 3; ++d) {
+                cc[d] = static_cast<std::int64_t>(grid.steps(Q(cells.first(cell), d), d)) >> level;
+            }
+            std::fill(table.begin(), table.end(), Run{});
+            std::size_t blockPoints = 0;
+            for (int dz = -1; dz <= 1; ++dz) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                        if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell ||
+                            z > lastCell) {
+                            continue;
+                        }
+                        const int other = cells.find(
+                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
+                        if (other < 0) {
+                            continue;
+                        }
+                        const int end = cells.end(other);
+                        blockPoints += static_cast<std::size_t>(end - cells.first(other));
+                        for (int first = cells.first(other); first < end;) {
+                            // The sub-cell: the key's three bits below the cell's.
+                            const unsigned sub = unsigned(keys[first] >> (3 * subLevel)) & 7u;
+                            int last = first + 1;
+                            while (last < end &&
+                                   (unsigned(keys[last] >> (3 * subLevel)) & 7u) == sub) {
+                                ++last;
+                            }
+                            const int X = 2 * (dx + 1) + int(sub & 1u);
+                            const int Y = 2 * (dy + 1) + int((sub >> 1) & 1u);
+                            const int Z = 2 * (dz + 1) + int(sub >> 2);
+                            table[static_cast<std::size_t>((Z * width + Y) * width + X)] = {first,
+                                                                                            last};
+                            first = last;
                         }
                     }
-                    if (rank < k) {
-                        result.indices(i, rank) = ia;
-                        result.squaredDistances(i, rank) = da;
+                }
+            }
+            candidates.reserve(blockPoints);
+            const std::int64_t origin[3] = {2 * (cc[0] - 1), 2 * (cc[1] - 1), 2 * (cc[2] - 1)};
+            if (!(guess > 0.0)) {
+                guess = 0.5 * subSteps * oneStep;
+            }
+            for (int j = cells.first(cell); j < cells.end(cell); ++j) {
+                double u[3];
+                for (int d = 0; d < 3; ++d) {
+                    u[d] = grid.steps(Q(j, d), d);
+                }
+                // The k nearest lie within R of the query when at least k points do: every point
+                // within R is in the sub-cells the box [q - R, q + R] overlaps. R starts from the
+                // guess and grows while fewer than k are found and the box stays in the table.
+                bool found = false;
+                for (double R = std::max(guess, oneStep);;) {
+                    const double reach = R * grid.scale * (1.0 + 1e-9) + stepMargin;
+                    int lo[3], hi[3];
+                    bool inside = true;
+                    for (int d = 0; d < 3; ++d) {
+                        // Sub-cells outside the grid hold no point.
+                        const std::int64_t a = std::max<std::int64_t>(
+                            0, static_cast<std::int64_t>(std::floor((u[d] - reach) / subSteps)));
+                        const std::int64_t b = std::min<std::int64_t>(
+                            lastSub,
+                            static_cast<std::int64_t>(std::floor((u[d] + reach) / subSteps)));
+                        lo[d] = static_cast<int>(a - origin[d]);
+                        hi[d] = static_cast<int>(b - origin[d]);
+                        inside = inside && lo[d] >= 0 && hi[d] < width;
                     }
+                    if (!inside) {
+                        break;
+                    }
+                    const double R2 = R * R;
+                    std::size_t count = 0;
+                    for (int Z = lo[2]; Z <= hi[2]; ++Z) {
+                        for (int Y = lo[1]; Y <= hi[1]; ++Y) {
+                            for (int X = lo[0]; X <= hi[0]; ++X) {
+                                const Run run =
+                                    table[static_cast<std::size_t>((Z * width + Y) * width + X)];
+                                for (int r = run.first; r < run.end; ++r) { // branch-free
+                                    const double d2 = (Q.row(r) - Q.row(j)).squaredNorm();
+                                    candidates.distance[count] = d2;
+                                    candidates.index[count] = r;
+                                    count += (d2 <= R2) & (r != j);
+                                }
+                            }
+                        }
+                    }
+                    if (count >= static_cast<std::size_t>(k)) {
+                        if (!sorted) {
+                            for (std::size_t a = 0; a < count; ++a) {
+                                candidates.index[a] =
+                                    original[static_cast<std::size_t>(candidates.index[a])];
+                            }
+                        }
+                        const int i = rowOf(j);
+                        storeNearest(candidates, count, k, &result.indices(i, 0),
+                                     &result.squaredDistances(i, 0));
+                        guess = radiusGuess * std::sqrt(result.squaredDistances(i, k - 1));
+                        found = true;
+                        break;
+                    }
+                    // About (count + 1) / R^2 points per area: aim at k + 1 with a margin.
+                    R *= std::max(1.25, 1.1 * std::sqrt((k + 1.0) / (count + 1.0)));
+                }
+                if (!found) {
+                    guess = radiusGuess * std::sqrt(searchWide(j, candidates, scratch));
                 }
             }
         }

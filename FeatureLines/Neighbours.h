@@ -27,7 +27,9 @@ struct Neighbourhoods
     Eigen::Index size() const { return indices.rows(); }
 };
 
-/// The k nearest other points of every point of P (exact search on a kd-tree).
+/// The k nearest other points of every point of P: an exact search over the cells of the
+/// points' Morton order (MortonOrder.h), on P itself when it comes in that order (as
+/// analyseCloud's points do), else on a sorted copy.
 /// Throws std::invalid_argument when P has no more than k points or options.k < 3.
 Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options = {});
 

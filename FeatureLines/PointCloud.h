@@ -7,7 +7,7 @@
 namespace featurelines {
 
 /// P  #P by 3 point positions, one row per point. Row-major, so the three coordinates of a
-/// point are contiguous (the kd-tree and the per-point loops read them that way).
+/// point are contiguous (the neighbour search and the per-point loops read them that way).
 using PointMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 /// N  #P by 3 unit normals, row i belongs to point i.

@@ -180,7 +180,7 @@ struct Result
     }
 };
 
-const char* const knnStage = "nearestNeighbours k=16 (nanoflann)";
+const char* const knnStage = "nearestNeighbours k=16";
 const char* const normalsStage = "pcaNormals";
 const char* const curvatureStage = "meanCurvature";
 const char* const wholeStage = "extractFeatureLines (whole, default options)";
@@ -503,9 +503,9 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
     ratio("(neighbours + normals + curvature) / PCL NormalEstimationOMP, CPU: ", perPoint,
           pclNormalsStage, &Row::medianCpu);
     if (r.has(pclKnnStage)) {
-        ratio("kNN alone, nanoflann / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage,
+        ratio("kNN alone, nearestNeighbours / PCL KdTreeFLANN, wall: ", {knnStage}, pclKnnStage,
               &Row::median);
-        ratio("kNN alone, nanoflann / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
+        ratio("kNN alone, nearestNeighbours / PCL KdTreeFLANN, CPU: ", {knnStage}, pclKnnStage,
               &Row::medianCpu);
     }
 }

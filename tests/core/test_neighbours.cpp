@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "FeatureLines/MortonOrder.h"
 #include "FeatureLines/Neighbours.h"
 
 using namespace featurelines;
@@ -90,6 +91,61 @@ TEST(Neighbours, MatchBruteForceAcrossScales)
         const std::vector<int> expected = bruteForce(P, i, k);
         for (int j = 0; j < k; ++j) {
             ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
+        }
+    }
+}
+
+TEST(Neighbours, MatchBruteForceInMortonOrder)
+{
+    // A noisy plane in the order of its Morton keys (the canonical order analyseCloud gives):
+    // the search then runs on the cloud itself instead of a sorted copy.
+    std::mt19937 rng(12);
+    std::normal_distribution<double> noise(0.0, 0.01);
+    PointMatrix plane = randomCloud(2000, 12);
+    for (Eigen::Index i = 0; i < plane.rows(); ++i) {
+        plane(i, 2) = noise(rng);
+    }
+    const MortonGrid grid(plane);
+    std::vector<std::pair<std::uint64_t, int>> keyed;
+    for (Eigen::Index i = 0; i < plane.rows(); ++i) {
+        keyed.emplace_back(grid.key(plane, i), static_cast<int>(i));
+    }
+    sortByMortonKey(keyed);
+    PointMatrix P(plane.rows(), 3);
+    for (size_t r = 0; r < keyed.size(); ++r) {
+        P.row(static_cast<Eigen::Index>(r)) = plane.row(keyed[r].second);
+    }
+    const int k = 16;
+    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
+    for (int i = 0; i < P.rows(); ++i) {
+        const std::vector<int> expected = bruteForce(P, i, k);
+        for (int j = 0; j < k; ++j) {
+            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
+        }
+    }
+}
+
+TEST(Neighbours, MatchBruteForceWithFarOutliers)
+{
+    // A dense lattice with a few points far off it: their neighbours lie far beyond the cells
+    // around them, and every lattice point has exact ties among its neighbours.
+    const PointMatrix lattice = squareLattice(40, 0.1);
+    PointMatrix P(lattice.rows() + 4, 3);
+    P.topRows(lattice.rows()) = lattice;
+    P.bottomRows(4) << 50.0, 0.0, 3.0, -20.0, 7.0, 1.0, 1.0, 1.0, 30.0, 2.0, 2.0, -0.5;
+    const int k = 8;
+    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
+    for (int i = 0; i < P.rows(); ++i) {
+        // The brute force's sort is not stable: compare distances, they are unique up to ties.
+        const std::vector<int> expected = bruteForce(P, i, k);
+        for (int j = 0; j < k; ++j) {
+            ASSERT_EQ(N.squaredDistances(i, j), (P.row(expected[j]) - P.row(i)).squaredNorm())
+                << "point " << i << ", neighbour " << j;
+        }
+        for (int j = 1; j < k; ++j) {
+            const double a = N.squaredDistances(i, j - 1), b = N.squaredDistances(i, j);
+            ASSERT_TRUE(a < b || (a == b && N.indices(i, j - 1) < N.indices(i, j)))
+                << "point " << i << ": ties go by index";
         }
     }
 }

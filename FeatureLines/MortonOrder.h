@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Morton (Z-order) keys of points and their sort. Sorted by key, points that are close in space
+// are close in the array, and the points of any cube of the key's octree (a key prefix) are one
+// run of it: the canonical order of the cloud (analyseCloud) and the cells of the neighbour
+// search (nearestNeighbours).
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "FeatureLines/PointCloud.h"
+
+namespace featurelines {
+
+/// Bits of a key per axis: 3 x 21 = 63 bits.
+constexpr int mortonBitsPerAxis = 21;
+
+/// Bits 0..20 of v spread to every third bit (bit b to bit 3 b).
+inline std::uint64_t spreadBits(std::uint64_t v)
+{
+    v &= 0x1FFFFF;
+    v = (v | v << 32) & 0x1F00000000FFFFULL;
+    v = (v | v << 16) & 0x1F0000FF0000FFULL;
+    v = (v | v << 8) & 0x100F00F00F00F00FULL;
+    v = (v | v << 4) & 0x10C30C30C30C30C3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+/// The key of the cell with integer coordinates x, y, z (each below 2^21): bit b of x is bit
+/// 3 b of the key, of y bit 3 b + 1, of z bit 3 b + 2.
+inline std::uint64_t mortonKey(std::uint64_t x, std::uint64_t y, std::uint64_t z)
+{
+    return spreadBits(x) | spreadBits(y) << 1 | spreadBits(z) << 2;
+}
+
+/// The quantisation of a cloud's keys: its bounding box from `low`, its largest side in
+/// 2^21 - 1 steps (`scale` steps per length unit; 0 when every point coincides).
+struct MortonGrid
+{
+    Eigen::RowVector3d low = Eigen::RowVector3d::Zero();
+    double scale = 0.0;
+
+    explicit MortonGrid(const PointMatrix& P);
+    /// Position along an axis in steps (not rounded).
+    double steps(double coordinate, int axis) const { return (coordinate - low[axis]) * scale; }
+    /// The key of row i of P.
+    std::uint64_t key(const PointMatrix& P, Eigen::Index i) const
+    {
+        return mortonKey(static_cast<std::uint64_t>(steps(P(i, 0), 0)),
+                         static_cast<std::uint64_t>(steps(P(i, 1), 1)),
+                         static_cast<std::uint64_t>(steps(P(i, 2), 2)));
+    }
+};
+
+/// Sorts by key, stably (pairs of equal keys keep their order): a radix sort, 11 bits of the
+/// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
+/// pairs), passes in which every key has the same digit skipped.
+void sortByMortonKey(std::vector<std::pair<std::uint64_t, int>>& keyed);
+
+} // namespace featurelines
