@@ -239,7 +239,12 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     return g;
 }
 
-RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOptions& options)
+namespace {
+
+/// analyseRegions; a region of every point takes over `spare` when given (the cloud's own
+/// neighbourhoods, which it then holds as its own) instead of a copy of them.
+RegionAnalysis analyseRegionsOf(const CloudGeometry& cloud, Neighbourhoods* spare,
+                                const ExtractionOptions& options)
 {
     RegionAnalysis a;
     const Eigen::Index n = cloud.points.rows();
@@ -274,12 +279,30 @@ RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOption
         for (int r = 0; r < a.regions.count(); ++r) {
             report(options.progress, 0.5 + 0.3 * r / a.regions.count(),
                    "curvature of smooth region " + std::to_string(r + 1));
-            a.geometry.push_back(analyseRegion(
-                cloud.points, cloud.neighbours, cloud.normals.normals, a.regions.region,
-                a.regions.members[r], r, cloud.spacing, options.smooth));
+            const std::vector<int>& members = a.regions.members[r];
+            bool everyPoint = spare != nullptr && members.size() == static_cast<size_t>(n);
+            for (size_t i = 0; i < members.size() && everyPoint; ++i) {
+                everyPoint = members[i] == static_cast<int>(i) && a.regions.region[i] == r;
+            }
+            if (everyPoint) {
+                a.geometry.push_back(analyseRegion(cloud.points, std::move(*spare),
+                                                   cloud.normals.normals, r, cloud.spacing,
+                                                   options.smooth));
+            } else {
+                a.geometry.push_back(analyseRegion(cloud.points, cloud.neighbours,
+                                                   cloud.normals.normals, a.regions.region, members,
+                                                   r, cloud.spacing, options.smooth));
+            }
         }
     }
     return a;
+}
+
+} // namespace
+
+RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOptions& options)
+{
+    return analyseRegionsOf(cloud, nullptr, options);
 }
 
 ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAnalysis& analysis,
@@ -403,8 +426,10 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
 
 ExtractionResult extractFeatureLines(const PointMatrix& P, const ExtractionOptions& options)
 {
-    const CloudGeometry cloud = analyseCloud(P, options.neighbours, options.progress);
-    const RegionAnalysis analysis = analyseRegions(cloud, options);
+    CloudGeometry cloud = analyseCloud(P, options.neighbours, options.progress);
+    // Nothing after the regions reads the cloud's neighbourhoods: a region of every point may
+    // take them over.
+    const RegionAnalysis analysis = analyseRegionsOf(cloud, &cloud.neighbours, options);
     return extractFeatureLines(cloud, analysis, options);
 }
 

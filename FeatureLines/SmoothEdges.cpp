@@ -609,7 +609,6 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     int best = 0;
     std::shared_ptr<RegionGeometry> chosen;
     GridCentroids chosenGrid;
-    Neighbourhoods chosenNeighbours;
     for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
         // A coarser scale is an offer, not a stage: one that cannot be analysed (too few or
         // degenerate cells) ends the trials and the region keeps what it has.
@@ -623,9 +622,9 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
             no.k = g.neighbours.k();
             Neighbourhoods cn = nearestNeighbours(grid.points, no);
             const double coarseSpacing = meanSpacing(cn);
-            auto coarse = std::make_shared<RegionGeometry>(analyseRegion(
-                grid.points, cn, std::vector<int>(static_cast<size_t>(cells), g.region),
-                allIndices(cells), g.region, coarseSpacing, coarseOptions));
+            auto coarse = std::make_shared<RegionGeometry>(
+                analyseRegion(grid.points, std::move(cn), NormalMatrix(), g.region,
+                              coarseSpacing, coarseOptions));
             fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
             g.scaleTrials.push_back(weigh(*coarse));
             // The finer of two coarse scales on a tie.
@@ -633,7 +632,6 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
                 best = g.scaleTrials.back().acceptedThresholds;
                 chosen = coarse;
                 chosenGrid = std::move(grid);
-                chosenNeighbours = std::move(cn);
             }
             if (largestRadius(coarse->curvatureNoise) >= extent) {
                 break;
@@ -651,7 +649,7 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     }
     g.curvatureScale = chosen->spacing / g.spacing;
     g.curvatureNoise = chosen->curvatureNoise;
-    g.curvature = valuesAtPoints(raw, chosenGrid, chosenNeighbours, chosen->curvature,
+    g.curvature = valuesAtPoints(raw, chosenGrid, chosen->neighbours, chosen->curvature,
                                  so.carryWidth * chosen->spacing);
     g.coarse = std::move(chosen);
 }
@@ -1028,6 +1026,35 @@ double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Ne
     return median(std::move(residuals)) / spacing;
 }
 
+namespace {
+
+/// The rest of analyseRegion once the region's points, neighbourhoods and normals are in g:
+/// noise, smoothing, 1-rings, curvature, its noise floor and scale.
+void analyseRegionGeometry(const PointMatrix& P, RegionGeometry& g,
+                           const SmoothEdgeOptions& options)
+{
+    g.noise = estimateNoise(g.points, g.normals, g.neighbours, g.spacing, options.noiseSamples);
+    g.smoothed =
+        options.smoothing == SmoothingMode::Always ||
+        (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
+    if (g.smoothed) {
+        // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
+        // cannot round them off.
+        g.points = laplacianSmooth(g.points, g.neighbours, allIndices(g.points.rows()),
+                                   options.smoothingOptions);
+        g.normals = pcaNormals(g.points, g.neighbours).normals;
+    }
+    g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
+    g.curvature =
+        regionCurvature(g.points, g.normals, g.neighbours,
+                        g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
+    g.curvatureNoise =
+        curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / g.spacing;
+    chooseCurvatureScale(P, g.members, g, options);
+}
+
+} // namespace
+
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
                              int regionId, double spacing, const SmoothEdgeOptions& options)
@@ -1085,24 +1112,35 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         }
         pcaNormalsOfRows(g.points, g.neighbours, cutRows, g.normals);
     }
-    g.noise = estimateNoise(g.points, g.normals, g.neighbours, spacing, options.noiseSamples);
-    g.smoothed =
-        options.smoothing == SmoothingMode::Always ||
-        (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
-    if (g.smoothed) {
-        // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
-        // cannot round them off.
-        g.points = laplacianSmooth(g.points, g.neighbours, allIndices(g.points.rows()),
-                                   options.smoothingOptions);
-        g.normals = pcaNormals(g.points, g.neighbours).normals;
+    analyseRegionGeometry(P, g, options);
+    return g;
+}
+
+RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
+                             int regionId, double spacing, const SmoothEdgeOptions& options)
+{
+    if (options.curvatureAveragingPasses < 0) {
+        throw std::invalid_argument("curvature averaging passes must not be negative");
     }
-    g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
-    g.curvature =
-        regionCurvature(g.points, g.normals, g.neighbours,
-                        g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
-    g.curvatureNoise =
-        curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / spacing;
-    chooseCurvatureScale(P, members, g, options);
+    if (N.size() != P.rows() || P.rows() <= N.k()) {
+        throw std::invalid_argument("smooth region " + std::to_string(regionId) + " has " +
+                                    std::to_string(P.rows()) + " points and " +
+                                    std::to_string(N.size()) +
+                                    " neighbourhoods: too few, or not the same cloud");
+    }
+    if (normals.rows() != 0 && normals.rows() != P.rows()) {
+        throw std::invalid_argument("analyseRegion: the cloud's normals and points differ in "
+                                    "number");
+    }
+    RegionGeometry g;
+    g.region = regionId;
+    g.members = allIndices(P.rows());
+    g.spacing = spacing;
+    g.neighbours = std::move(N);
+    g.points = P;
+    // Every neighbour is in the region: the cloud's normals are the region's.
+    g.normals = normals.rows() == 0 ? pcaNormals(g.points, g.neighbours).normals : normals;
+    analyseRegionGeometry(P, g, options);
     return g;
 }
 

@@ -248,6 +248,13 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& members, int regionId, double spacing,
                              const SmoothEdgeOptions& options = {});
 
+/// The same for a region of every point of P (no sharp edge or boundary band cuts the cloud),
+/// taking over P's neighbourhoods N, which are the region's own: the one-shot extraction and the
+/// coarse curvature scales spare their copy (190 MiB per million points at k = 16). normals may
+/// be empty (fitted here).
+RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
+                             int regionId, double spacing, const SmoothEdgeOptions& options = {});
+
 /// The noise estimate of SmoothEdgeOptions::noiseThreshold (x spacing): the median distance of
 /// a point from the quadric fitted to its neighbours (in its normal's frame, the point itself
 /// left out). Insensitive to curvature; about 0.9 sigma for normal noise sigma. At most
