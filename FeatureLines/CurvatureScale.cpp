@@ -22,7 +22,7 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     }
     const Eigen::RowVector3d low = P.colwise().minCoeff();
     const Eigen::RowVector3d cells = ((P.colwise().maxCoeff() - low) / cell).array().floor();
-    if (!(cells.maxCoeff() < static_cast<double>(1 << 21))) { // mortonKey's 21 bits an axis
+    if (!(cells.maxCoeff() < static_cast<double>(1 << mortonBitsPerAxis))) {
         throw std::invalid_argument("grid centroids: the cloud spans too many cells");
     }
     // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
@@ -30,12 +30,14 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        const auto c = [&](int d) {
-            return static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
-        };
-        keyed[static_cast<size_t>(i)] = {mortonKey(c(0), c(1), c(2)), static_cast<int>(i)};
+        std::uint64_t c[3];
+        for (int d = 0; d < 3; ++d) {
+            c[d] = static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
+        }
+        keyed[static_cast<size_t>(i)] = {mortonKey(c[0], c[1], c[2]), static_cast<int>(i)};
     }
-    std::sort(keyed.begin(), keyed.end());
+    // Stable: the pairs come in index order, so this is their order by (key, index).
+    sortByMortonKey(keyed);
 
     GridCentroids grid;
     grid.cellOf.resize(static_cast<size_t>(n));
