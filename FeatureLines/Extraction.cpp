@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
@@ -92,6 +93,7 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
 
 void requireSurface(const PointMatrix& P)
 {
+    releaseIdleThreads(); // serial sums over the cloud
     const Eigen::RowVector3d mean = P.colwise().mean();
     const PointMatrix centred = P.rowwise() - mean;
     const Eigen::Matrix3d covariance =
@@ -174,6 +176,7 @@ int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds,
             level[i] += g.curvature[i] > t ? 1 : 0;
         }
     }
+    releaseIdleThreads(); // the flood fill is serial
     patchOfRegionPoint.assign(static_cast<size_t>(n), -1);
     int next = firstId;
     std::vector<int> stack;
@@ -233,6 +236,7 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     requireSurface(g.points);
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
+    releaseIdleThreads(); // meanSpacing is a serial sum
     g.spacing = meanSpacing(g.neighbours);
     report(progress, 0.3, "normals");
     g.normals = pcaNormals(g.points, g.neighbours);
@@ -407,7 +411,8 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
         }
     }
 
-    // Per input point, through the merge of duplicates.
+    // Per input point, through the merge of duplicates (serial copies).
+    releaseIdleThreads();
     const size_t inputs = cloud.inputToPoint.size();
     result.region.resize(inputs);
     result.patch.resize(inputs);

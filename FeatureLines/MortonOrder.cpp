@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/MortonOrder.h"
 
+#include "FeatureLines/IdleThreads.h"
+
 namespace featurelines {
 
 MortonGrid::MortonGrid(const PointMatrix& P)
@@ -15,6 +17,7 @@ MortonGrid::MortonGrid(const PointMatrix& P)
 
 void sortByMortonKey(std::vector<std::pair<std::uint64_t, int>>& keyed)
 {
+    releaseIdleThreads();                // a serial sweep of the pairs per pass
     constexpr int bits = 11, passes = 6; // 66 bits cover the 63 of the key
     constexpr std::size_t buckets = std::size_t(1) << bits;
     const std::size_t n = keyed.size();

@@ -12,6 +12,7 @@
 #include <omp.h>
 
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
@@ -220,6 +221,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
         return sorted ? static_cast<int>(j) : original[static_cast<std::size_t>(j)];
     };
 
+    releaseIdleThreads(); // the level and the cells' hash table are serial
     // The level: the finest whose cells hold the wanted mean number of points. Consecutive
     // keys first differ at bit b: a new cell starts there on every level up to b / 3.
     std::vector<long> newCells(mortonBitsPerAxis + 1, 0);

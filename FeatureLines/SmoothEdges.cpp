@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 
 #include "FeatureLines/Boundary.h"
+#include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
 #include "FeatureLines/SmoothRegions.h"
@@ -350,6 +351,7 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
 /// normals differ by far less than 90 degrees and the sign of their dot product is reliable.
 NormalMatrix orientedNormals(NormalMatrix normals, const Neighbourhoods& N)
 {
+    releaseIdleThreads(); // the walk is serial
     const Eigen::Index n = normals.rows();
     std::vector<char> seen(static_cast<size_t>(n), 0);
     std::vector<int> queue;
@@ -489,6 +491,7 @@ void fillRimFromInterior(RegionGeometry& g, double width)
     const Eigen::Index n = g.points.rows();
     const Neighbourhoods& N = g.neighbours;
     const std::vector<char> rim = boundaryPoints(g.points, g.normals, N);
+    releaseIdleThreads(); // the rest is serial
     constexpr double infinity = std::numeric_limits<double>::infinity();
     // Distance from the rim along the neighbourhood graph (Dijkstra from every rim point),
     // within the width.
