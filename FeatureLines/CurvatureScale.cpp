@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "FeatureLines/MortonOrder.h"
 
 namespace featurelines {
@@ -58,6 +60,29 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
         grid.points.row(static_cast<Eigen::Index>(c)) = sums[c] / counts[c];
     }
     return grid;
+}
+
+double planeDeviation(const PointMatrix& P, double share)
+{
+    const Eigen::Index n = P.rows();
+    if (n < 3 || !(share >= 0.0 && share < 1.0)) {
+        throw std::invalid_argument("plane deviation: needs 3 points or more and a share in "
+                                    "[0, 1)");
+    }
+    const Eigen::RowVector3d centre = P.colwise().mean();
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> D = P.rowwise() - centre;
+    const Eigen::Matrix3d scatter = D.transpose() * D;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+    const Eigen::Vector3d normal = solver.eigenvectors().col(0); // smallest eigenvalue
+    std::vector<double> distance(static_cast<size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        distance[static_cast<size_t>(i)] = std::abs(D.row(i).dot(normal.transpose()));
+    }
+    const auto at = distance.begin() +
+                    std::min<Eigen::Index>(n - 1, static_cast<Eigen::Index>(
+                                                      std::floor((1.0 - share) * (n - 1))));
+    std::nth_element(distance.begin(), at, distance.end());
+    return *at;
 }
 
 Eigen::VectorXd valuesAtPoints(const PointMatrix& P, const GridCentroids& grid,

@@ -32,6 +32,11 @@ struct CurvatureScaleOptions
     /// coarse sampling's spacing: wide enough that the values vary smoothly from cell to cell
     /// (a threshold then crosses between points, not on the grid), narrow against the fit.
     double carryWidth = 0.5;
+    /// x the region's noise estimate (RegionGeometry::noise, spacings): a region whose points,
+    /// all but a thousandth, lie this close to one plane (planeDeviation) is a face; it has
+    /// no curvature level above noise to find at any scale, and no coarser scale is tried.
+    /// 0 tries them on faces too.
+    double planeTolerance = 6.0;
 };
 
 struct GridCentroids
@@ -47,6 +52,11 @@ struct GridCentroids
 /// per occupied cell. Throws std::invalid_argument when cell is not positive or P is empty, or
 /// when the cloud spans more than 2^21 cells along an axis.
 GridCentroids gridCentroids(const PointMatrix& P, double cell);
+
+/// How far the points of P lie from their least-squares plane: the distance that all but a
+/// `share` of them (0 <= share < 1) stay within. Throws std::invalid_argument for fewer than 3
+/// points or a share outside [0, 1).
+double planeDeviation(const PointMatrix& P, double share);
 
 /// Values given at the centroids carried back to the points they average: per point p of P,
 /// the mean of the values at its cell's centroid and that centroid's neighbours in N (the

@@ -561,10 +561,11 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
 {
     const CurvatureScaleOptions& so = options.scales;
     if (!(so.maxScale >= 1.0) || !(so.carryWidth > 0.0) || !(so.rimWidth >= 0.0) ||
-        so.minPoints < 0) {
+        so.minPoints < 0 || !(so.planeTolerance >= 0.0)) {
         throw std::invalid_argument("curvature scales: the coarsest scale must be at least 1 "
-                                    "spacing, the carry width positive, the rim width and the "
-                                    "least number of cells not negative");
+                                    "spacing, the carry width positive, the rim width, the "
+                                    "plane tolerance and the least number of cells not "
+                                    "negative");
     }
     if (!(so.maxScale >= 2.0) || !(g.curvatureNoise > 0.0)) {
         return;
@@ -578,6 +579,11 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     }
     const double extent = 0.5 * (raw.colwise().maxCoeff() - raw.colwise().minCoeff()).norm();
     if (largestRadius(g.curvatureNoise) >= extent) {
+        return;
+    }
+    // A face within noise of its plane (one in a thousand of its points may stray farther,
+    // noise's own tail at 3.3 standard deviations) has no fillet to hide.
+    if (m >= 3 && planeDeviation(raw, 0.001) <= so.planeTolerance * g.noise * g.spacing) {
         return;
     }
     SmoothEdgeOptions coarseOptions = options;

@@ -486,7 +486,8 @@ const std::vector<Command>& commands()
          "[--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N]",
          {{"--output", "FILE",
            "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
-           "\"points\"}], \"junctions\", \"regions\" (thresholds used)}",
+           "\"points\"}], \"junctions\", \"regions\" (per region: its noise, thresholds used, "
+           "curvature scale and the coarser scales weighed, scale_trials)}",
            "-o"},
           {"--labels", "FILE",
            "also write per input point: smooth region, patch, Sec. 3 label, curvature"},

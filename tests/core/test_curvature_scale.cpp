@@ -84,11 +84,15 @@ TEST(CurvatureScale, CarriedValuesFollowTheCoarseField)
     EXPECT_THROW(valuesAtPoints(plane.points, grid, N, constant, 0.0), std::invalid_argument);
 }
 
+// The coarse scales themselves make no level of a plane's noise: tried on a noisy plane (the
+// plane tolerance, which spares faces the trials, set to 0), no scale accepts a threshold.
 TEST(CurvatureScale, ANoisyPlaneHasOneLevelAtEveryScale)
 {
     shapes::Sample plane = shapes::plane(60.0, 0.5, 5);
     shapes::addNormalNoise(plane, 0.3 * 0.5, 6);
-    const RegionGeometry g = wholeCloud(plane.points);
+    SmoothEdgeOptions options;
+    options.scales.planeTolerance = 0.0;
+    const RegionGeometry g = wholeCloud(plane.points, options);
     ASSERT_GE(g.scaleTrials.size(), 2u) << "the noise hides large radii: coarser scales tried";
     EXPECT_EQ(g.scaleTrials.front().acceptedThresholds, -1) << "own scale not weighed";
     for (size_t t = 1; t < g.scaleTrials.size(); ++t) {
@@ -96,6 +100,49 @@ TEST(CurvatureScale, ANoisyPlaneHasOneLevelAtEveryScale)
     }
     EXPECT_EQ(g.curvatureScale, 1.0);
     EXPECT_FALSE(g.coarse);
+}
+
+// Gaussian noise of standard deviation s about a plane: all but a thousandth of the points
+// lie within 3.29 s of it (the normal distribution's two-sided 0.999 quantile), all within
+// the noise's largest value; a half cylinder of radius r strays 2 r / pi from its plane.
+TEST(CurvatureScale, PlaneDeviationIsTheNoiseOfAPlaneAndTheBulgeOfACylinder)
+{
+    const double sigma = 0.05;
+    shapes::Sample plane = shapes::plane(60.0, 0.3, 7);
+    shapes::addNormalNoise(plane, sigma, 8);
+    // A tilted copy: the plane is fitted, not assumed to be z = 0.
+    const Eigen::Matrix3d turn =
+        (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 0.5).normalized())).toRotationMatrix();
+    const PointMatrix tilted = (plane.points * turn.transpose()).rowwise() +
+                               Eigen::RowVector3d(3.0, -2.0, 5.0);
+    EXPECT_NEAR(planeDeviation(tilted, 0.001), 3.29 * sigma, 0.3 * sigma);
+    EXPECT_NEAR(planeDeviation(tilted, 0.3173), sigma, 0.05 * sigma) << "one standard deviation";
+    EXPECT_NEAR(planeDeviation(tilted, 0.0), plane.points.col(2).cwiseAbs().maxCoeff(),
+                0.02 * sigma)
+        << "the largest distance";
+
+    const double r = 10.0;
+    PointMatrix half(10000, 3); // 4 r long: its plane is the one through its two rims
+    for (Eigen::Index i = 0; i < half.rows(); ++i) {
+        const double t = M_PI * (static_cast<double>(i % 100) + 0.5) / 100.0;
+        half.row(i) << r * std::cos(t), r * std::sin(t), 0.4 * static_cast<double>(i / 100);
+    }
+    // The plane passes at the mean height 2 r / pi: the rims lie 0.64 r from it.
+    EXPECT_NEAR(planeDeviation(half, 0.001), 2.0 * r / M_PI, 0.02 * r);
+    EXPECT_THROW(planeDeviation(half.topRows(2), 0.001), std::invalid_argument);
+    EXPECT_THROW(planeDeviation(half, 1.0), std::invalid_argument);
+}
+
+// With the default tolerance a noisy face tries no coarser scale: nothing to find, and the
+// trials' cost (a third of the region's) spared. The same plane with the tolerance at 0 tries
+// them (ANoisyPlaneHasOneLevelAtEveryScale), and so does the cylinder below.
+TEST(CurvatureScale, ANoisyFaceTriesNoCoarserScale)
+{
+    shapes::Sample plane = shapes::plane(60.0, 0.5, 5);
+    shapes::addNormalNoise(plane, 0.3 * 0.5, 6);
+    const RegionGeometry face = wholeCloud(plane.points);
+    EXPECT_TRUE(face.scaleTrials.empty()) << face.scaleTrials.size() << " scales weighed";
+    EXPECT_EQ(face.curvatureScale, 1.0);
 }
 
 // A noisy half cylinder cut off on all four sides by the region's rim: at the rim the fit and
@@ -200,7 +247,9 @@ TEST(CurvatureScale, AbsurdScaleOptionsAreRefusedWithAMessage)
              [](CurvatureScaleOptions& o) { o.maxScale = std::nan(""); },
              [](CurvatureScaleOptions& o) { o.carryWidth = 0.0; },
              [](CurvatureScaleOptions& o) { o.rimWidth = -1.0; },
-             [](CurvatureScaleOptions& o) { o.minPoints = -5; }}) {
+             [](CurvatureScaleOptions& o) { o.minPoints = -5; },
+             [](CurvatureScaleOptions& o) { o.planeTolerance = -1.0; },
+             [](CurvatureScaleOptions& o) { o.planeTolerance = std::nan(""); }}) {
         SmoothEdgeOptions options;
         set(options.scales);
         try {
