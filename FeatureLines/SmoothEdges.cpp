@@ -1037,6 +1037,19 @@ double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Ne
 
 namespace {
 
+/// The options and the cloud's normals (none, or one per point of P) analyseRegion can use.
+void requireRegionInputs(const PointMatrix& P, const NormalMatrix& normals,
+                         const SmoothEdgeOptions& options)
+{
+    if (options.curvatureAveragingPasses < 0) {
+        throw std::invalid_argument("curvature averaging passes must not be negative");
+    }
+    if (normals.rows() != 0 && normals.rows() != P.rows()) {
+        throw std::invalid_argument("analyseRegion: the cloud's normals and points differ in "
+                                    "number");
+    }
+}
+
 /// The rest of analyseRegion once the region's points, neighbourhoods and normals are in g:
 /// noise, smoothing, 1-rings, curvature, its noise floor and scale.
 void analyseRegionGeometry(const PointMatrix& P, RegionGeometry& g,
@@ -1076,17 +1089,11 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& members, int regionId, double spacing,
                              const SmoothEdgeOptions& options)
 {
-    if (options.curvatureAveragingPasses < 0) {
-        throw std::invalid_argument("curvature averaging passes must not be negative");
-    }
+    requireRegionInputs(P, normals, options);
     if (members.size() <= static_cast<size_t>(N.k())) {
         throw std::invalid_argument("smooth region " + std::to_string(regionId) + " has " +
                                     std::to_string(members.size()) +
                                     " points, too few for its curvature");
-    }
-    if (normals.rows() != 0 && normals.rows() != P.rows()) {
-        throw std::invalid_argument("analyseRegion: the cloud's normals and points differ in "
-                                    "number");
     }
     RegionGeometry g;
     g.region = regionId;
@@ -1128,18 +1135,12 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
 RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
                              int regionId, double spacing, const SmoothEdgeOptions& options)
 {
-    if (options.curvatureAveragingPasses < 0) {
-        throw std::invalid_argument("curvature averaging passes must not be negative");
-    }
+    requireRegionInputs(P, normals, options);
     if (N.size() != P.rows() || P.rows() <= N.k()) {
         throw std::invalid_argument("smooth region " + std::to_string(regionId) + " has " +
                                     std::to_string(P.rows()) + " points and " +
                                     std::to_string(N.size()) +
                                     " neighbourhoods: too few, or not the same cloud");
-    }
-    if (normals.rows() != 0 && normals.rows() != P.rows()) {
-        throw std::invalid_argument("analyseRegion: the cloud's normals and points differ in "
-                                    "number");
     }
     RegionGeometry g;
     g.region = regionId;

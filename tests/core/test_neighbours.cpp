@@ -55,6 +55,18 @@ PointMatrix squareLattice(int n, double spacing)
     return P;
 }
 
+/// The search's k neighbours of every point are the brute force's, in its order.
+void expectBruteForceNeighbours(const PointMatrix& P, int k)
+{
+    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
+    for (int i = 0; i < P.rows(); ++i) {
+        const std::vector<int> expected = bruteForce(P, i, k);
+        for (int j = 0; j < k; ++j) {
+            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
+        }
+    }
+}
+
 } // namespace
 
 TEST(Neighbours, MatchBruteForceOnRandomCloud)
@@ -85,14 +97,7 @@ TEST(Neighbours, MatchBruteForceAcrossScales)
     PointMatrix P(spread.rows() + tight.rows() + small.rows(), 3);
     P << spread, tight.rowwise() + Eigen::RowVector3d(5.0, 5.0, 5.0),
         small.rowwise() + Eigen::RowVector3d(5.0, 5.0, 5.0);
-    const int k = 10;
-    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
-    for (int i = 0; i < P.rows(); ++i) {
-        const std::vector<int> expected = bruteForce(P, i, k);
-        for (int j = 0; j < k; ++j) {
-            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
-        }
-    }
+    expectBruteForceNeighbours(P, 10);
 }
 
 TEST(Neighbours, MatchBruteForceInMortonOrder)
@@ -115,14 +120,7 @@ TEST(Neighbours, MatchBruteForceInMortonOrder)
     for (size_t r = 0; r < keyed.size(); ++r) {
         P.row(static_cast<Eigen::Index>(r)) = plane.row(keyed[r].second);
     }
-    const int k = 16;
-    const Neighbourhoods N = nearestNeighbours(P, {k, 0});
-    for (int i = 0; i < P.rows(); ++i) {
-        const std::vector<int> expected = bruteForce(P, i, k);
-        for (int j = 0; j < k; ++j) {
-            ASSERT_EQ(N.indices(i, j), expected[j]) << "point " << i << ", neighbour " << j;
-        }
-    }
+    expectBruteForceNeighbours(P, 16);
 }
 
 TEST(Neighbours, MatchBruteForceWithFarOutliers)
