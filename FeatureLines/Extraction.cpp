@@ -284,11 +284,7 @@ RegionAnalysis analyseRegionsOf(const CloudGeometry& cloud, Neighbourhoods* spar
             report(options.progress, 0.5 + 0.3 * r / a.regions.count(),
                    "curvature of smooth region " + std::to_string(r + 1));
             const std::vector<int>& members = a.regions.members[r];
-            bool everyPoint = spare != nullptr && members.size() == static_cast<size_t>(n);
-            for (size_t i = 0; i < members.size() && everyPoint; ++i) {
-                everyPoint = members[i] == static_cast<int>(i) && a.regions.region[i] == r;
-            }
-            if (everyPoint) {
+            if (spare != nullptr && holdsEveryPoint(a.regions.region, members, r)) {
                 a.geometry.push_back(analyseRegion(cloud.points, std::move(*spare),
                                                    cloud.normals.normals, r, cloud.spacing,
                                                    options.smooth));

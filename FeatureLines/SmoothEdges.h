@@ -159,7 +159,6 @@ struct SmoothEdgeOptions
     /// radii, leaves about half of it across the line; the edge of a noise island, or a
     /// curvature that only drifts through tau, leaves about one floor.
     double minLineContrast = 2.0;
-
     /// Sec. 3: "small clusters" are the clusters of at most this many points (the single
     /// points met at a label change).
     int maxCandidateClusterSize = 1;

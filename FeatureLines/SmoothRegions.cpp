@@ -256,6 +256,16 @@ std::vector<char> pointsNearLines(const PointMatrix& P, const std::vector<int>& 
     return near;
 }
 
+bool holdsEveryPoint(const std::vector<int>& region, const std::vector<int>& members,
+                     int regionId)
+{
+    bool every = members.size() == region.size();
+    for (size_t m = 0; m < members.size() && every; ++m) {
+        every = members[m] == static_cast<int>(m) && region[m] == regionId;
+    }
+    return every;
+}
+
 Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<int>& region,
                                     const std::vector<int>& members, int regionId)
 {
@@ -265,11 +275,7 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
     }
     // A region of every point (a cloud without sharp edges) keeps every neighbourhood whole: a
     // copy of N, at the speed of a copy.
-    bool everyPoint = members.size() == region.size();
-    for (size_t m = 0; m < members.size() && everyPoint; ++m) {
-        everyPoint = members[m] == static_cast<int>(m) && region[m] == regionId;
-    }
-    if (everyPoint) {
+    if (holdsEveryPoint(region, members, regionId)) {
         return N;
     }
     // Row of each member in the sub-cloud: a table over the members' index range when the

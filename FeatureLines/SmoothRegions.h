@@ -53,6 +53,12 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
 std::vector<char> pointsNearLines(const PointMatrix& P, const std::vector<int>& points,
                                   const std::vector<Polyline>& lines, double distance);
 
+/// Whether region `regionId` is the whole cloud: `members` lists every point of the cloud
+/// (`region`, one label per point) in row order and each is labelled regionId. Its
+/// neighbourhoods are then the cloud's own.
+bool holdsEveryPoint(const std::vector<int>& region, const std::vector<int>& members,
+                     int regionId);
+
 /// The k nearest neighbours of a region's points within the region, as indices into the
 /// region's member list (a sub-cloud). Neighbours outside the region are replaced by repeating
 /// the in-region ones nearest first, so every row still has k entries.

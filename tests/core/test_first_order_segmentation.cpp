@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "FeatureLines/FirstOrderSegmentation.h"
 #include "FeatureLines/Normals.h"
@@ -312,29 +314,17 @@ TEST(FirstOrderSegmentation, BadInputThrows)
                  std::invalid_argument);
     EXPECT_THROW(segmentByNormals(plane.points, p.normals.normals, p.neighbours, 0.0),
                  std::invalid_argument);
-    FirstOrderSegmentationOptions zeroAngle;
-    zeroAngle.growAngle = 0.0;
-    EXPECT_THROW(
-        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, zeroAngle),
-        std::invalid_argument);
-    FirstOrderSegmentationOptions negative;
-    negative.noiseSpreadFactor = -1.0;
-    EXPECT_THROW(
-        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, negative),
-        std::invalid_argument);
-    FirstOrderSegmentationOptions wideShallow;
-    wideShallow.shallowCreaseAngle = 120.0;
-    EXPECT_THROW(
-        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, wideShallow),
-        std::invalid_argument);
-    FirstOrderSegmentationOptions fewFacePoints;
-    fewFacePoints.minFacePoints = 2;
-    EXPECT_THROW(
-        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, fewFacePoints),
-        std::invalid_argument);
-    FirstOrderSegmentationOptions noReach;
-    noReach.creaseLineReach = 0.0;
-    EXPECT_THROW(
-        segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, noReach),
-        std::invalid_argument);
+    // Absurd options, one at a time.
+    for (const auto& set : std::vector<std::function<void(FirstOrderSegmentationOptions&)>>{
+             [](FirstOrderSegmentationOptions& o) { o.growAngle = 0.0; },
+             [](FirstOrderSegmentationOptions& o) { o.noiseSpreadFactor = -1.0; },
+             [](FirstOrderSegmentationOptions& o) { o.shallowCreaseAngle = 120.0; },
+             [](FirstOrderSegmentationOptions& o) { o.minFacePoints = 2; },
+             [](FirstOrderSegmentationOptions& o) { o.creaseLineReach = 0.0; }}) {
+        FirstOrderSegmentationOptions options;
+        set(options);
+        EXPECT_THROW(
+            segmentByNormals(plane.points, p.normals.normals, p.neighbours, p.spacing, options),
+            std::invalid_argument);
+    }
 }
