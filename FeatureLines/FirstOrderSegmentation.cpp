@@ -3,13 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 #include <omp.h>
+
+#include "FeatureLines/DisjointSets.h"
 
 namespace featurelines {
 
@@ -29,15 +30,6 @@ void requireAngle(double degrees, const char* name)
                                     " must be an angle in degrees between 0 and 90, not " +
                                     std::to_string(degrees));
     }
-}
-
-int findRoot(std::vector<int>& parent, int a)
-{
-    while (parent[a] != a) {
-        parent[a] = parent[parent[a]];
-        a = parent[a];
-    }
-    return a;
 }
 
 /// The faces of flat points met among the neighbours of a point's neighbours, and the test of
@@ -352,10 +344,10 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
 
     // Growing points reached from one another form one cluster: the connected components of
     // the "grows and joins" relation, found with disjoint sets instead of a queue so the
-    // result does not depend on the choice of seeds. For shallowCreaseAngle the points whose
-    // normals spread within the limit (flat points, which all grow) are joined among
-    // themselves first: the sets then are the faces of flat points, read off before the other
-    // growing points join them.
+    // result depends neither on the choice of seeds nor on the threads that join them. For
+    // shallowCreaseAngle the points whose normals spread within the limit (flat points, which
+    // all grow) are joined among themselves first: the sets then are the faces of flat
+    // points, read off before the other growing points join them.
     const bool shallowCreases = options.shallowCreaseAngle > 0.0;
     const double flatAngle = std::clamp(
         result.noiseSpreadLimit, std::min(options.joinAngle, result.growAngle), result.growAngle);
@@ -363,17 +355,17 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(flat.size()); ++i) {
         flat[i] = result.spread(i) <= flatAngle ? 1 : 0;
     }
-    std::vector<int> parent(n);
-    std::iota(parent.begin(), parent.end(), 0);
+    DisjointSets sets(static_cast<int>(n));
     // In the first pass a flat point notes whether it has growing neighbours that are not
     // flat; the second pass visits only those and the points that are not flat.
     std::vector<char> mixed(shallowCreases ? n : 0, 0);
     auto joinGrowing = [&](bool flatPairs) {
+#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
         for (Eigen::Index i = 0; i < n; ++i) {
             if (!grows[i] || (shallowCreases && flat[i] != flatPairs && !(flat[i] && mixed[i]))) {
                 continue;
             }
-            int root = findRoot(parent, static_cast<int>(i));
+            int root = static_cast<int>(i);
             for (int j = 0; j < k; ++j) {
                 const int q = N.indices(i, j);
                 if (!grows[q]) {
@@ -384,14 +376,8 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
                     mixed[i] = mixed[i] || flatPairs;
                     continue;
                 }
-                if (similarity(i, q) < cosJoin) {
-                    continue;
-                }
-                const int other = findRoot(parent, q);
-                if (other != root) {
-                    // The smaller root survives, as i's root is looked up only once.
-                    parent[std::max(root, other)] = std::min(root, other);
-                    root = std::min(root, other);
+                if (sets.find(q) != sets.find(root) && similarity(i, q) >= cosJoin) {
+                    root = sets.join(root, q);
                 }
             }
         }
@@ -402,7 +388,7 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
         std::vector<int> flatInRoot(n, 0);
         for (Eigen::Index i = 0; i < n; ++i) {
             if (flat[i]) {
-                result.face[i] = findRoot(parent, static_cast<int>(i));
+                result.face[i] = sets.find(static_cast<int>(i));
                 ++flatInRoot[result.face[i]];
             }
         }
@@ -419,10 +405,9 @@ FirstOrderSegmentation segmentByNormals(const PointMatrix& P, const NormalMatrix
     // points, what a large cluster needs for one interior point): then it lies between two
     // faces, on a crease too shallow to leave a band wider than a neighbourhood between
     // them, and stays a candidate. Smaller clusters are splinters noise breaks off a patch.
-    std::vector<int> root(n);
+    const std::vector<int> root = sets.representatives();
     std::vector<int> growingInRoot(n, 0);
     for (Eigen::Index i = 0; i < n; ++i) {
-        root[i] = findRoot(parent, static_cast<int>(i));
         growingInRoot[root[i]] += grows[i];
     }
     const ShallowCreaseTest::Inputs creaseInputs{P,

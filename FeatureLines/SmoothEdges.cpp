@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -19,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include "FeatureLines/Boundary.h"
+#include "FeatureLines/DisjointSets.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
@@ -301,7 +301,7 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
                                    double high, const RingNeighbourhoods& ring)
 {
     const Eigen::Index n = curvature.size();
-    constexpr char outside = 0, above = 1, below = 2, seen = 3;
+    constexpr char outside = 0, above = 1, below = 2;
     const auto levelOf = [&](int i) {
         const double c = curvature[i];
         return c > tau && c <= high ? above : (c > low && c <= tau ? below : outside);
@@ -320,28 +320,28 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
         }
         state[i] = interior ? level : outside;
     }
-    std::vector<int> stack;
-    int largest[3] = {0, 0, 0};
-    for (Eigen::Index s = 0; s < n; ++s) {
-        const char level = state[s];
-        if (level != above && level != below) {
+    // The patches: interior points of one level joined through the 1-rings (both ways).
+    DisjointSets sets(static_cast<int>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (state[i] == outside) {
             continue;
         }
-        state[s] = seen;
-        stack.assign(1, static_cast<int>(s));
-        int size = 0;
-        while (!stack.empty()) {
-            const int p = stack.back();
-            stack.pop_back();
-            ++size;
-            for (const int* q = ring.begin(p); q != ring.end(p); ++q) {
-                if (state[*q] == level) {
-                    state[*q] = seen;
-                    stack.push_back(*q);
-                }
+        int root = static_cast<int>(i);
+        for (const int* q = ring.begin(i); q != ring.end(i); ++q) {
+            if (state[*q] == state[i]) {
+                root = sets.join(root, *q);
             }
         }
-        largest[static_cast<int>(level)] = std::max(largest[static_cast<int>(level)], size);
+    }
+    const std::vector<int> root = sets.representatives();
+    std::vector<int> size(static_cast<size_t>(n), 0);
+    int largest[3] = {0, 0, 0};
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (state[i] != outside) {
+            const int s = ++size[static_cast<size_t>(root[i])];
+            largest[static_cast<int>(state[i])] = std::max(largest[static_cast<int>(state[i])], s);
+        }
     }
     return {largest[static_cast<int>(above)], largest[static_cast<int>(below)]};
 }
@@ -1339,37 +1339,22 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         d.applied = tau;
         // Sec. 2.4: the outliers leave the histogram, not the patches.
         const double searchHigh = range.first ? d.result.outlierCut : range.high;
-        // The patch search walks the 1-rings one point after another: it runs beside the rest
-        // (each part on its own; their parallel loops then run on one thread each).
-        std::exception_ptr failure;
-#pragma omp parallel sections num_threads(2)
-        {
-#pragma omp section
-            std::tie(d.largestPatch, d.largestPatchBelow) =
-                largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
-#pragma omp section
-            try {
-                std::vector<double> below, above;
-                for (double v : all) {
-                    if (v > range.patchLow && v <= range.patchHigh) {
-                        (v <= tau ? below : above).push_back(v);
-                    }
-                }
-                d.medianBelow = median(std::move(below));
-                d.medianAbove = median(std::move(above));
-                const std::vector<PointLabel> labels =
-                    labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
-                d.innerPoints =
-                    static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
-                d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
-                                           range.patchHigh, a.straddleReach);
-            } catch (...) {
-                failure = std::current_exception();
+        std::tie(d.largestPatch, d.largestPatchBelow) =
+            largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
+        std::vector<double> below, above;
+        for (double v : all) {
+            if (v > range.patchLow && v <= range.patchHigh) {
+                (v <= tau ? below : above).push_back(v);
             }
         }
-        if (failure) {
-            std::rethrow_exception(failure);
-        }
+        d.medianBelow = median(std::move(below));
+        d.medianAbove = median(std::move(above));
+        const std::vector<PointLabel> labels =
+            labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
+        d.innerPoints =
+            static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
+        d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
+                                   range.patchHigh, a.straddleReach);
         d.contrast = (d.medianAbove + flat) / (d.medianBelow + flat);
         d.separation = region.curvatureNoise > 0.0
                            ? (d.medianAbove - d.medianBelow) / region.curvatureNoise

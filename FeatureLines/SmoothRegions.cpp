@@ -8,6 +8,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "FeatureLines/DisjointSets.h"
+
 namespace featurelines {
 
 namespace {
@@ -136,38 +138,47 @@ SmoothRegions divideSmoothRegions(const PointMatrix& P, const Neighbourhoods& N,
         eligible[i] = !candidate && (band.empty() || !band.contains(P.row(i)));
     }
 
-    // 2. Connected components of the kNN graph over the eligible points. Where the sampling is
-    // sparse a neighbour can lie farther than the band is wide; such a long edge must not
-    // jump the band across a crease: it joins only when its middle lies off the band too.
+    // 2. Connected components of the kNN graph over the eligible points, its edges taken both
+    // ways (q among p's neighbours joins p and q, whichever of them is visited first). Where
+    // the sampling is sparse a neighbour can lie farther than the band is wide; such a long
+    // edge must not jump the band across a crease: it joins only when its middle lies off the
+    // band too.
     const double longEdge2 = std::pow(options.bandWidth * spacing, 2);
     std::vector<int> component(static_cast<size_t>(n), -1);
     std::vector<int> sizes;
     const auto connect = [&]() {
-        std::fill(component.begin(), component.end(), -1);
-        sizes.clear();
-        std::vector<int> stack;
-        for (Eigen::Index s = 0; s < n; ++s) {
-            if (!eligible[s] || component[s] >= 0) {
+        DisjointSets sets(static_cast<int>(n));
+#pragma omp parallel for schedule(static, 4096)
+        for (Eigen::Index p = 0; p < n; ++p) {
+            if (!eligible[p]) {
                 continue;
             }
-            const int id = static_cast<int>(sizes.size());
-            sizes.push_back(0);
-            component[s] = id;
-            stack.assign(1, static_cast<int>(s));
-            while (!stack.empty()) {
-                const int p = stack.back();
-                stack.pop_back();
-                ++sizes[id];
-                for (int j = 0; j < N.k(); ++j) {
-                    const int q = N.indices(p, j);
-                    if (eligible[q] && component[q] < 0 &&
-                        !(N.squaredDistances(p, j) > longEdge2 &&
-                          band.contains(0.5 * (P.row(p) + P.row(q))))) {
-                        component[q] = id;
-                        stack.push_back(q);
-                    }
+            int root = static_cast<int>(p);
+            for (int j = 0; j < N.k(); ++j) {
+                const int q = N.indices(p, j);
+                // The band is looked up only for an edge that would join two sets.
+                if (eligible[q] && sets.find(q) != sets.find(root) &&
+                    !(N.squaredDistances(p, j) > longEdge2 &&
+                      band.contains(0.5 * (P.row(p) + P.row(q))))) {
+                    root = sets.join(root, q);
                 }
             }
+        }
+        // Components numbered in the order of their first points.
+        const std::vector<int> root = sets.representatives();
+        sizes.clear();
+        for (Eigen::Index p = 0; p < n; ++p) {
+            if (!eligible[p]) {
+                component[p] = -1;
+                continue;
+            }
+            if (root[p] == p) {
+                component[p] = static_cast<int>(sizes.size());
+                sizes.push_back(0);
+            } else {
+                component[p] = component[root[p]];
+            }
+            ++sizes[component[p]];
         }
     };
     connect();
