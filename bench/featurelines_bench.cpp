@@ -154,6 +154,34 @@ Row measure(const std::string& name, int runs, const std::function<std::size_t()
     return row;
 }
 
+/// Adds one more run's figures to `into` (empty: the run's row itself).
+void append(Row& into, const Row& run)
+{
+    if (into.seconds.empty()) {
+        into = run;
+        return;
+    }
+    into.seconds.insert(into.seconds.end(), run.seconds.begin(), run.seconds.end());
+    into.cpu.insert(into.cpu.end(), run.cpu.begin(), run.cpu.end());
+    into.outputMiB = run.outputMiB;
+    into.peakRssMiB = std::max(into.peakRssMiB, run.peakRssMiB);
+}
+
+/// Runs two stages in turn, `runs` times each (a, b, a, b, ...). A machine whose speed drifts
+/// over minutes (a shared virtual machine, a throttled processor) then slows both alike: their
+/// ratio, run by run, holds where two medians taken a minute apart would not.
+std::pair<Row, Row> measureInTurn(const std::string& nameA, const std::function<std::size_t()>& a,
+                                  const std::string& nameB, const std::function<std::size_t()>& b,
+                                  int runs)
+{
+    Row first, second;
+    for (int r = 0; r < runs; ++r) {
+        append(first, measure(nameA, 1, a));
+        append(second, measure(nameB, 1, b));
+    }
+    return {first, second};
+}
+
 std::size_t bytesOf(const Neighbourhoods& N)
 {
     return static_cast<std::size_t>(N.indices.size()) * sizeof(int) +
@@ -335,12 +363,13 @@ Result runOne(const Cloud& cloud, int runs, int threads, bool stages)
     rings = RingNeighbourhoods{};
     smoothed = PointMatrix{};
 
-    // The whole method with its default options, as `featurelines extract` runs it; its steps
-    // are timed through the progress callback (medians over the runs).
+    // The whole method with its default options, as `featurelines extract` runs it, in turn
+    // with the yardstick on the same points (converted once to PCL's type); its steps are
+    // timed through the progress callback (medians over the runs).
+    const PclCloud pcl(P);
     std::vector<StepClock> clocks;
-    ExtractionResult extraction;
-    result.rows.push_back(measure(wholeStage, runs, [&] {
-        extraction = ExtractionResult{};
+    const auto whole = [&] {
+        ExtractionResult extraction;
         ExtractionOptions o;
         o.neighbours.threads = threads;
         clocks.emplace_back();
@@ -351,8 +380,18 @@ Result runOne(const Cloud& cloud, int runs, int threads, bool stages)
         for (const FeatureLine& l : extraction.lines) {
             bytes += static_cast<std::size_t>(l.points.size()) * sizeof(double);
         }
+        result.lines = std::to_string(extraction.lines.size()) + " lines (sharp " +
+                       std::to_string(extraction.countLines(LineType::Sharp)) + ", smooth " +
+                       std::to_string(extraction.countLines(LineType::Smooth)) + ", boundary " +
+                       std::to_string(extraction.countLines(LineType::Boundary)) + "), " +
+                       std::to_string(extraction.junctions.rows()) + " junctions, " +
+                       std::to_string(extraction.regions.size()) + " smooth regions";
         return bytes;
-    }));
+    };
+    auto [wholeRow, pclRow] = measureInTurn(
+        wholeStage, whole, pclNormalsStage, [&] { return pcl.normalEstimationOmp(16, threads); },
+        runs);
+    result.rows.push_back(std::move(wholeRow));
     for (const auto& [name, seconds] : clocks.front().steps()) {
         Row part;
         part.stage = "- " + name;
@@ -367,18 +406,7 @@ Result runOne(const Cloud& cloud, int runs, int threads, bool stages)
         }
         result.rows.push_back(part);
     }
-    result.lines = std::to_string(extraction.lines.size()) + " lines (sharp " +
-                   std::to_string(extraction.countLines(LineType::Sharp)) + ", smooth " +
-                   std::to_string(extraction.countLines(LineType::Smooth)) + ", boundary " +
-                   std::to_string(extraction.countLines(LineType::Boundary)) + "), " +
-                   std::to_string(extraction.junctions.rows()) + " junctions, " +
-                   std::to_string(extraction.regions.size()) + " smooth regions";
-    extraction = ExtractionResult{};
-
-    // The yardstick, on the same points converted once to PCL's type.
-    const PclCloud pcl(P);
-    result.rows.push_back(
-        measure(pclNormalsStage, runs, [&] { return pcl.normalEstimationOmp(16, threads); }));
+    result.rows.push_back(std::move(pclRow));
     if (stages) {
         result.rows.push_back(
             measure(pclKnnStage, runs, [&] { return pcl.kdTreeFlannKnn(16, threads); }));
@@ -492,6 +520,20 @@ void printTable(std::ostream& out, const Result& r, bool markdown)
           &Row::median);
     ratio("whole extraction / PCL NormalEstimationOMP, CPU: ", {wholeStage}, pclNormalsStage,
           &Row::medianCpu);
+    // The two ran in turn: the ratio of each run to the yardstick's run after it.
+    const auto runByRun = [&](const char* what, std::vector<double> Row::*times) {
+        const std::vector<double>& ours = r.row(wholeStage).*times;
+        const std::vector<double>& theirs = r.row(pclNormalsStage).*times;
+        std::vector<double> ratios;
+        for (std::size_t i = 0; i < ours.size() && i < theirs.size(); ++i) {
+            ratios.push_back(ours[i] / theirs[i]);
+        }
+        const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+        out << what << fixed(*lo, 2) << ".." << fixed(*hi, 2) << " (median "
+            << fixed(Row::medianOf(ratios), 2) << ")" << (markdown ? "  \n" : "\n");
+    };
+    runByRun("whole extraction / PCL NormalEstimationOMP run by run, wall: ", &Row::seconds);
+    runByRun("whole extraction / PCL NormalEstimationOMP run by run, CPU: ", &Row::cpu);
     const Row& whole = r.row(wholeStage);
     const double millions = static_cast<double>(r.points) / 1e6;
     out << "whole extraction, memory per million points: peak RSS "
