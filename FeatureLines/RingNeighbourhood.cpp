@@ -48,14 +48,17 @@ constexpr double straightTurn = 1e-9;
 /// The hull is first built from the origin and the images of the nearest neighbours only,
 /// this many. The others come by decreasing |w| (the neighbours are sorted nearest first) and
 /// most lie well inside it: inside the largest disc about the origin that the hull holds (its
-/// distance to the nearest hull edge), so they cannot change it and are dropped; the hull is
-/// built again when any is left. On scan-like clouds the Delaunay neighbours are nearly
-/// always among the nearest 8.
+/// distance to the nearest hull edge; one test), or else inside the hull itself (a test per
+/// edge), so they cannot change it and are dropped; the hull is built again when any is left.
+/// On scan-like clouds the Delaunay neighbours are nearly always among the nearest 8; on a
+/// smoothed noisy region half the points have a candidate outside the disc, most of them
+/// inside the hull.
 constexpr int firstCandidates = 8;
 
 /// A candidate is dropped only when it lies inside that disc by this relative margin of its
-/// squared radius, far above the rounding of the straightness test: a dropped candidate lies
-/// strictly inside the hull, so the hull, vertex for vertex, is that of all the candidates.
+/// squared radius, or inside every hull edge by this margin of the sine of its angle, far
+/// above the rounding of the straightness test: a dropped candidate lies strictly inside the
+/// hull, so the hull, vertex for vertex, is that of all the candidates.
 constexpr double insideMargin = 1e-6;
 
 int threadCount(int requested)
@@ -124,6 +127,28 @@ void convexHull(const Candidates& c, std::vector<int>& order, std::vector<int>& 
         hull[size++] = order[i];
     }
     hull.resize(static_cast<size_t>(size - 1)); // the last point repeats the first
+}
+
+/// True when the point (x, y) lies inside the counter-clockwise hull, left of each of its
+/// edges by more than the relative margin insideMargin: it cannot be a vertex of the hull of
+/// these candidates and more.
+bool strictlyInside(const Candidates& c, const std::vector<int>& hull, double x, double y)
+{
+    const std::size_t size = hull.size();
+    if (size < 3) {
+        return false;
+    }
+    for (std::size_t h = 0; h < size; ++h) {
+        const int a = hull[h], b = hull[(h + 1) % size];
+        const double ex = c.x[b] - c.x[a], ey = c.y[b] - c.y[a];
+        const double px = x - c.x[a], py = y - c.y[a];
+        const double cross = ex * py - ey * px;
+        if (!(cross > 0.0) || cross * cross <= insideMargin * insideMargin * (ex * ex + ey * ey) *
+                                                   (px * px + py * py)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 /// The squared radius of the largest disc about the origin (candidate 0) inside the hull, or
@@ -212,7 +237,7 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
                         insideRadiusSquared(candidates, hull) * (1.0 - insideMargin);
                     for (int c = first; c < images.count; ++c) {
                         const double x = images.x[c], y = images.y[c];
-                        if (!(x * x + y * y < inside)) {
+                        if (!(x * x + y * y < inside) && !strictlyInside(candidates, hull, x, y)) {
                             candidates.add(x, y, images.index[c]);
                         }
                     }

@@ -122,6 +122,71 @@ TEST(Ring, JitteredSquareLatticeIsADelaunayTriangulation)
     EXPECT_NEAR(total / count, 6.0, 0.25);
 }
 
+TEST(Ring, UniformRandomPointsHaveEveryDelaunayNeighbourAmongTheirNeighbours)
+{
+    // Uniform random points (no lattice: the Delaunay neighbours are often beyond the nearest
+    // 8, so the hull is built from more than the first candidates). The reference, for each
+    // interior point p: q among p's 16 neighbours is a Delaunay neighbour of p iff the image
+    // w = 2 (q - p) / |q - p|^2 is a vertex of the convex hull of the origin and all the
+    // images, i.e. lies in no triangle of three other of those points (points in general
+    // position: no three on a line).
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(0.0, 40.0);
+    const int n = 1600;
+    PointMatrix P(n, 3);
+    for (int i = 0; i < n; ++i) {
+        P.row(i) << coordinate(rng), coordinate(rng), 0.0;
+    }
+    const Neighbourhoods N = nearestNeighbours(P, {16, 0});
+    NormalMatrix up(n, 3);
+    up.rowwise() = Eigen::RowVector3d(0.0, 0.0, 1.0);
+    const RingNeighbourhoods R = ringNeighbourhoods(P, up, N);
+    const auto inTriangle = [](const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                               const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+        const auto side = [](const Eigen::Vector2d& o, const Eigen::Vector2d& u,
+                             const Eigen::Vector2d& v) {
+            return (u - o).x() * (v - o).y() - (u - o).y() * (v - o).x();
+        };
+        const double s1 = side(a, b, p), s2 = side(b, c, p), s3 = side(c, a, p);
+        return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
+    };
+    int checked = 0, beyondEight = 0;
+    for (int i = 0; i < n; ++i) {
+        if (!interior(P, i, 4.0)) {
+            continue;
+        }
+        std::vector<Eigen::Vector2d> w{Eigen::Vector2d::Zero()};
+        for (int j = 0; j < N.k(); ++j) {
+            const Eigen::Vector2d d = (P.row(N.indices(i, j)) - P.row(i)).head<2>().transpose();
+            w.push_back(2.0 * d / d.squaredNorm());
+        }
+        std::vector<int> expected;
+        for (int j = 1; j <= N.k(); ++j) {
+            bool vertex = true;
+            for (size_t a = 0; a < w.size() && vertex; ++a) {
+                for (size_t b = a + 1; b < w.size() && vertex; ++b) {
+                    for (size_t c = b + 1; c < w.size() && vertex; ++c) {
+                        const bool others = a != size_t(j) && b != size_t(j) && c != size_t(j);
+                        vertex = !(others && inTriangle(w[j], w[a], w[b], w[c]));
+                    }
+                }
+            }
+            if (vertex) {
+                expected.push_back(N.indices(i, j - 1));
+                beyondEight += j > 8 ? 1 : 0;
+            }
+        }
+        std::vector<int> ring(R.begin(i), R.end(i));
+        std::sort(ring.begin(), ring.end());
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(ring, expected) << "point " << i;
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+    // The case the shortcut must get right does occur.
+    EXPECT_GT(beyondEight, 20);
+}
+
 TEST(Ring, BorderPointsKeepNeighboursOnOneSide)
 {
     // Row 0 of the triangular lattice is its lower border: those rings never reach y < 0.
