@@ -1,12 +1,67 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/Smoothing.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace featurelines {
+
+namespace {
+
+/// p + factor (mean of the umbrella - p) for the point p, from the sum of its umbrella's
+/// coordinates (in the umbrella's order, from zero) and its size: Eigen's arithmetic for the
+/// same row expression.
+inline void moveTowards(const double* point, const double (&sum)[3], int size, double factor,
+                        double* out)
+{
+    for (int d = 0; d < 3; ++d) {
+        const double mean = sum[d] / size;
+        out[d] = point[d] + factor * (mean - point[d]);
+    }
+}
+
+/// One umbrella step of the rows [first, last) of a subset of every row, whose umbrellas are
+/// the k neighbours of each row: two rows at a time, whose sums are independent chains of
+/// additions (the processor overlaps their loads).
+void umbrellaStep(const double* from, double* to, const int* neighbours, int k, double factor,
+                  Eigen::Index first, Eigen::Index last)
+{
+    Eigen::Index s = first;
+    for (; s + 1 < last; s += 2) {
+        const int* a = neighbours + s * k;
+        const int* b = a + k;
+        double sa[3] = {0.0, 0.0, 0.0}, sb[3] = {0.0, 0.0, 0.0};
+        for (int j = 0; j < k; ++j) {
+            const double* qa = from + 3 * static_cast<std::ptrdiff_t>(a[j]);
+            const double* qb = from + 3 * static_cast<std::ptrdiff_t>(b[j]);
+            sa[0] += qa[0];
+            sa[1] += qa[1];
+            sa[2] += qa[2];
+            sb[0] += qb[0];
+            sb[1] += qb[1];
+            sb[2] += qb[2];
+        }
+        moveTowards(from + 3 * s, sa, k, factor, to + 3 * s);
+        moveTowards(from + 3 * (s + 1), sb, k, factor, to + 3 * (s + 1));
+    }
+    for (; s < last; ++s) {
+        const int* a = neighbours + s * k;
+        double sa[3] = {0.0, 0.0, 0.0};
+        for (int j = 0; j < k; ++j) {
+            const double* qa = from + 3 * static_cast<std::ptrdiff_t>(a[j]);
+            sa[0] += qa[0];
+            sa[1] += qa[1];
+            sa[2] += qa[2];
+        }
+        moveTowards(from + 3 * s, sa, k, factor, to + 3 * s);
+    }
+}
+
+} // namespace
 
 PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
                             const std::vector<int>& subset, const SmoothingOptions& options)
@@ -40,18 +95,13 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
     const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
     // The subset of all points in row order (a whole region) needs no copying back, and its
     // umbrellas are the neighbourhoods themselves (every neighbour is in the subset).
-    bool everyRow = m == n;
+    bool everyRow = m == n && N.k() > 0;
     for (Eigen::Index s = 0; s < m && everyRow; ++s) {
         everyRow = subset[s] == s;
     }
     std::vector<int> offsets;
     std::vector<int> members;
-    if (everyRow) {
-        offsets.resize(static_cast<size_t>(m) + 1);
-        for (Eigen::Index s = 0; s <= m; ++s) {
-            offsets[s] = static_cast<int>(s) * N.k();
-        }
-    } else {
+    if (!everyRow) {
         offsets.assign(static_cast<size_t>(m) + 1, 0);
         members.reserve(m * N.k());
         for (Eigen::Index s = 0; s < m; ++s) {
@@ -71,6 +121,18 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
     // One umbrella step for every subset point from the same positions (Jacobi), so the
     // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
     auto step = [&](double factor) {
+        if (everyRow) {
+            const double* from = current.data();
+            double* to = moved.data();
+            const Eigen::Index blocks = (m + 4095) / 4096;
+#pragma omp parallel for schedule(static, 1)
+            for (Eigen::Index b = 0; b < blocks; ++b) {
+                umbrellaStep(from, to, umbrella, N.k(), factor, b * 4096,
+                             std::min(m, (b + 1) * 4096));
+            }
+            current.swap(moved); // every row moved
+            return;
+        }
 #pragma omp parallel for schedule(static, 4096)
         for (Eigen::Index s = 0; s < m; ++s) {
             const int i = subset[s];
@@ -85,10 +147,6 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
             }
             mean /= count;
             moved.row(s) = current.row(i) + factor * (mean - current.row(i));
-        }
-        if (everyRow) {
-            current.swap(moved); // every row moved
-            return;
         }
 #pragma omp parallel for schedule(static, 4096)
         for (Eigen::Index s = 0; s < m; ++s) {
