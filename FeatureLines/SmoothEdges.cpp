@@ -306,17 +306,22 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
         const double c = curvature[i];
         return c > tau && c <= high ? above : (c > low && c <= tau ? below : outside);
     };
-    // Per point: the level it is an interior point of, or outside.
+    // Per point: its level, then the level it is an interior point of, or outside.
+    std::vector<char> levels(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        levels[i] = levelOf(static_cast<int>(i));
+    }
     std::vector<char> state(static_cast<size_t>(n), outside);
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        const char level = levelOf(static_cast<int>(i));
+        const char level = levels[i];
         if (level == outside || ring.size(i) == 0) {
             continue;
         }
         bool interior = true;
         for (const int* q = ring.begin(i); q != ring.end(i) && interior; ++q) {
-            interior = levelOf(*q) == level;
+            interior = levels[*q] == level;
         }
         state[i] = interior ? level : outside;
     }
@@ -334,16 +339,40 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
             }
         }
     }
+    // Sizes per set, counted in runs of points of one set (rows in Morton order: long runs).
     const std::vector<int> root = sets.representatives();
     std::vector<int> size(static_cast<size_t>(n), 0);
-    int largest[3] = {0, 0, 0};
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (state[i] != outside) {
-            const int s = ++size[static_cast<size_t>(root[i])];
-            largest[static_cast<int>(state[i])] = std::max(largest[static_cast<int>(state[i])], s);
+#pragma omp parallel
+    {
+        int current = -1, run = 0;
+#pragma omp for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const int r = state[i] == outside ? -1 : root[i];
+            if (r != current) {
+                if (run > 0) {
+#pragma omp atomic
+                    size[current] += run;
+                }
+                current = r;
+                run = 0;
+            }
+            run += r >= 0 ? 1 : 0;
+        }
+        if (run > 0) {
+#pragma omp atomic
+            size[current] += run;
         }
     }
-    return {largest[static_cast<int>(above)], largest[static_cast<int>(below)]};
+    int largestAbove = 0, largestBelow = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(max : largestAbove, largestBelow)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (root[i] == i && state[i] == above) {
+            largestAbove = std::max(largestAbove, size[i]);
+        } else if (root[i] == i && state[i] == below) {
+            largestBelow = std::max(largestBelow, size[i]);
+        }
+    }
+    return {largestAbove, largestBelow};
 }
 
 /// Normals flipped so that neighbours agree: breadth first over the neighbourhoods from the
