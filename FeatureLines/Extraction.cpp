@@ -10,7 +10,10 @@
 #include <numeric>
 #include <vector>
 
+#include <omp.h>
+
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/DisjointSets.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
 
@@ -176,27 +179,23 @@ int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds,
             level[i] += g.curvature[i] > t ? 1 : 0;
         }
     }
-    releaseIdleThreads(); // the flood fill is serial
-    patchOfRegionPoint.assign(static_cast<size_t>(n), -1);
-    int next = firstId;
-    std::vector<int> stack;
-    for (Eigen::Index s = 0; s < n; ++s) {
-        if (patchOfRegionPoint[s] >= 0) {
-            continue;
-        }
-        patchOfRegionPoint[s] = next;
-        stack.assign(1, static_cast<int>(s));
-        while (!stack.empty()) {
-            const int p = stack.back();
-            stack.pop_back();
-            for (const int* q = g.ring.begin(p); q != g.ring.end(p); ++q) {
-                if (patchOfRegionPoint[*q] < 0 && level[*q] == level[p]) {
-                    patchOfRegionPoint[*q] = next;
-                    stack.push_back(*q);
-                }
+    // Pieces: the points joined with the ring members of their level (either way), each
+    // numbered in the order of its first point.
+    DisjointSets sets(static_cast<int>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        int root = static_cast<int>(i);
+        for (const int* q = g.ring.begin(i); q != g.ring.end(i); ++q) {
+            if (level[*q] == level[i]) {
+                root = sets.join(root, *q);
             }
         }
-        ++next;
+    }
+    const std::vector<int> root = sets.representatives();
+    patchOfRegionPoint.assign(static_cast<size_t>(n), -1);
+    int next = firstId;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        patchOfRegionPoint[i] = root[i] == i ? next++ : patchOfRegionPoint[root[i]];
     }
     return next;
 }
@@ -348,15 +347,19 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
             }
         }
 
-        // The levels, and the patches, are independent of each other: each runs on a thread of
-        // its own (most of their work walks the 1-rings one point after another).
+        // The levels and the patches are independent of each other: each level runs on a
+        // thread of its own (most of its work walks the 1-rings one point after another). The
+        // patches run beside them when the levels leave a thread idle, else after them on
+        // every thread.
         const int levels = static_cast<int>(rr.thresholds.size());
+        const bool patchesBeside = levels % std::max(1, omp_get_max_threads()) != 0;
+        const int items = levels + (patchesBeside ? 1 : 0);
         std::vector<SmoothEdgeLevel> edgesAt(rr.thresholds.size());
         std::vector<int> patchOf;
         int nextPatch = patches;
-        std::vector<std::exception_ptr> failure(rr.thresholds.size() + 1);
-#pragma omp parallel for schedule(dynamic, 1) if (levels > 0)
-        for (int item = 0; item <= levels; ++item) {
+        std::vector<std::exception_ptr> failure(static_cast<size_t>(items));
+#pragma omp parallel for schedule(dynamic, 1) if (items > 1)
+        for (int item = 0; item < items; ++item) {
             try {
                 if (item < levels) {
                     // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the
@@ -375,7 +378,7 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
                 std::rethrow_exception(e);
             }
         }
-        patches = nextPatch;
+        patches = patchesBeside ? nextPatch : labelPatches(g, rr.thresholds, patches, patchOf);
         std::vector<PointLabel> firstLabels;
         for (size_t level = 0; level < rr.thresholds.size(); ++level) {
             const SmoothEdgeLevel& edges = edgesAt[level];
