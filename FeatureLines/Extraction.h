@@ -157,9 +157,10 @@ ExtractionResult extractFeatureLines(const CloudGeometry& geometry, const Region
 /// ExtractionCancelled when the progress callback asks to stop.
 ExtractionResult extractFeatureLines(const PointMatrix& P, const ExtractionOptions& options = {});
 
-/// Per point of region g its patch: the connected pieces (over the 1-rings) of the points that
-/// lie between the same two of `thresholds`, numbered from `firstId` on (patchOfRegionPoint,
-/// #g.points). Returns the next free number.
+/// Per point of region g its patch: the connected pieces (over the 1-rings, a ring member
+/// either way) of the points that lie between the same two of `thresholds`, numbered from
+/// `firstId` on in the order of their first points (patchOfRegionPoint, #g.points). Returns
+/// the next free number.
 int labelPatches(const RegionGeometry& g, const std::vector<double>& thresholds, int firstId,
                  std::vector<int>& patchOfRegionPoint);
 
