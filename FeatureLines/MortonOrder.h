@@ -56,7 +56,8 @@ struct MortonGrid
 
 /// Sorts by key, stably (pairs of equal keys keep their order): a radix sort, 11 bits of the
 /// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
-/// pairs), passes in which every key has the same digit skipped.
+/// pairs), passes in which every key has the same digit skipped; the threads count and move
+/// one run of the array each.
 void sortByMortonKey(std::vector<std::pair<std::uint64_t, int>>& keyed);
 
 } // namespace featurelines
