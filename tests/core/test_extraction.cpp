@@ -378,6 +378,12 @@ TEST(Extraction, BadCloudsAreRefusedWithAMessage)
         line.row(i) << i * 0.1, 2 * i * 0.1, 0.0;
     }
     EXPECT_NE(message(line).find("line"), std::string::npos);
+    // A long line far from the origin: its moments are summed in many blocks.
+    PointMatrix farLine(100000, 3);
+    for (int i = 0; i < 100000; ++i) {
+        farLine.row(i) << 1e5 + i * 0.01, -3e4 - i * 0.02, 7e4 + i * 0.005;
+    }
+    EXPECT_NE(message(farLine).find("points lie on a line"), std::string::npos);
 
     PointMatrix same = PointMatrix::Ones(500, 3);
     EXPECT_NE(message(same).find("distinct"), std::string::npos);
