@@ -100,99 +100,6 @@ double median(std::vector<double> v)
     return *mid;
 }
 
-/// The values of `all` that `keep` accepts, in their order: each thread counts and then copies
-/// its blocks.
-template <class Keep>
-std::vector<double> valuesWhere(const std::vector<double>& all, const Keep& keep)
-{
-    constexpr long block = 16384;
-    const long n = static_cast<long>(all.size());
-    const long blocks = (n + block - 1) / block;
-    std::vector<long> offset(static_cast<size_t>(blocks) + 1, 0);
-#pragma omp parallel for schedule(static, 1)
-    for (long b = 0; b < blocks; ++b) {
-        long count = 0;
-        for (long i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-            count += keep(all[static_cast<size_t>(i)]) ? 1 : 0;
-        }
-        offset[static_cast<size_t>(b) + 1] = count;
-    }
-    for (long b = 0; b < blocks; ++b) {
-        offset[static_cast<size_t>(b) + 1] += offset[static_cast<size_t>(b)];
-    }
-    std::vector<double> values(static_cast<size_t>(offset.back()));
-#pragma omp parallel for schedule(static, 1)
-    for (long b = 0; b < blocks; ++b) {
-        long at = offset[static_cast<size_t>(b)];
-        for (long i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-            if (keep(all[static_cast<size_t>(i)])) {
-                values[static_cast<size_t>(at++)] = all[static_cast<size_t>(i)];
-            }
-        }
-    }
-    return values;
-}
-
-/// median() of the values of `all` that `keep` accepts, without a sort of them all: the values
-/// are counted into buckets of equal width between their least and largest (a parallel pass),
-/// and only the bucket holding the middle rank is searched. The buckets are ordered as the
-/// values are (the bucket number grows with the value), so the value is median()'s exactly.
-template <class Keep> double medianWhere(const std::vector<double>& all, const Keep& keep)
-{
-    constexpr int buckets = 4096;
-    const long n = static_cast<long>(all.size());
-    long count = 0;
-    double lo = std::numeric_limits<double>::infinity();
-    double hi = -std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static, 16384) reduction(+ : count) reduction(min : lo) \
-    reduction(max : hi)
-    for (long i = 0; i < n; ++i) {
-        const double v = all[static_cast<size_t>(i)];
-        if (keep(v)) {
-            ++count;
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-    }
-    if (count == 0) {
-        return 0.0;
-    }
-    const double scale = buckets / (hi - lo);
-    if (!(hi > lo) || !std::isfinite(scale)) {
-        return median(valuesWhere(all, keep));
-    }
-    const auto bucketOf = [&](double v) {
-        return std::min(buckets - 1, static_cast<int>((v - lo) * scale));
-    };
-    std::vector<long> histogram(buckets, 0);
-#pragma omp parallel
-    {
-        std::vector<long> own(buckets, 0);
-#pragma omp for schedule(static, 16384) nowait
-        for (long i = 0; i < n; ++i) {
-            const double v = all[static_cast<size_t>(i)];
-            if (keep(v)) {
-                ++own[static_cast<size_t>(bucketOf(v))];
-            }
-        }
-#pragma omp critical
-        for (int b = 0; b < buckets; ++b) {
-            histogram[static_cast<size_t>(b)] += own[static_cast<size_t>(b)];
-        }
-    }
-    long rank = count / 2; // the index median() takes
-    int middle = 0;
-    while (rank >= histogram[static_cast<size_t>(middle)]) {
-        rank -= histogram[static_cast<size_t>(middle)];
-        ++middle;
-    }
-    std::vector<double> inBucket =
-        valuesWhere(all, [&](double v) { return keep(v) && bucketOf(v) == middle; });
-    const auto at = inBucket.begin() + static_cast<std::ptrdiff_t>(rank);
-    std::nth_element(inBucket.begin(), at, inBucket.end());
-    return *at;
-}
-
 /// The middle of the valley that starts at a threshold: Sec. 2.2 puts tau right after the peak
 /// b1 (the end of its run of k bins), where the valley starts; the valley ends where the
 /// histogram rises to the next peak: k bins holding twice the valley's floor so far (the least
@@ -754,8 +661,8 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
             Neighbourhoods cn = nearestNeighbours(grid.points, no);
             const double coarseSpacing = meanSpacing(cn);
             auto coarse = std::make_shared<RegionGeometry>(
-                analyseRegion(grid.points, std::move(cn), NormalMatrix(), g.region, coarseSpacing,
-                              coarseOptions));
+                analyseRegion(grid.points, std::move(cn), NormalMatrix(), g.region,
+                              coarseSpacing, coarseOptions));
             fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
             g.scaleTrials.push_back(weigh(*coarse));
             // The finer of two coarse scales on a tie.
@@ -1429,8 +1336,12 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
            static_cast<int>(decisions.size()) < a.maxSearches) {
         const Range range = ranges.back();
         ranges.pop_back();
-        const std::vector<double> values =
-            valuesWhere(all, [&](double v) { return v > range.low && v <= range.high; });
+        std::vector<double> values;
+        for (double v : all) {
+            if (v > range.low && v <= range.high) {
+                values.push_back(v);
+            }
+        }
         if (values.empty()) {
             continue;
         }
@@ -1459,9 +1370,14 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         const double searchHigh = range.first ? d.result.outlierCut : range.high;
         std::tie(d.largestPatch, d.largestPatchBelow) =
             largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
-        const auto inPatches = [&](double v) { return v > range.patchLow && v <= range.patchHigh; };
-        d.medianBelow = medianWhere(all, [&](double v) { return inPatches(v) && v <= tau; });
-        d.medianAbove = medianWhere(all, [&](double v) { return inPatches(v) && v > tau; });
+        std::vector<double> below, above;
+        for (double v : all) {
+            if (v > range.patchLow && v <= range.patchHigh) {
+                (v <= tau ? below : above).push_back(v);
+            }
+        }
+        d.medianBelow = median(std::move(below));
+        d.medianAbove = median(std::move(above));
         const std::vector<PointLabel> labels =
             labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
         d.innerPoints =
