@@ -37,8 +37,8 @@ struct SmoothRegions
 
 /// Divides the cloud by its sharp lines: the points farther than bandWidth from every sharp
 /// line and not sharp candidates themselves, grouped into the connected components of the
-/// k-nearest-neighbour graph. With no sharp line the whole cloud is one region. Regions are
-/// numbered by decreasing size.
+/// k-nearest-neighbour graph (its edges taken both ways). With no sharp line the whole cloud is
+/// one region. Regions are numbered by decreasing size.
 ///   P               #P by 3 points
 ///   N               their k nearest neighbours
 ///   sharpLines      the sharp lines only (boundary lines do not divide a region)
