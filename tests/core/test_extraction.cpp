@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <set>
@@ -165,6 +167,47 @@ TEST(Extraction, RoundedCubeGivesCornerLoopsAndFaceLoopsAtTwoThresholds)
     const double edge = 40.0, radius = 6.0, h = 0.5;
     const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
     expectRoundedCubeLoops(extractFeatureLines(s.points), edge, radius, 3 * h);
+}
+
+TEST(Extraction, RoundedCubePatchesAreItsFacesItsCornersAndOneFilletNetwork)
+{
+    // Two thresholds cut the curvature into three levels: the six flat faces (|H| = 0) apart,
+    // the eight corners (|H| = 1/r) apart, and the twelve fillets (|H| = 1/(2r)), which meet
+    // each other around every corner, one connected piece.
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
+    const ExtractionResult r = extractFeatureLines(s.points);
+    ASSERT_EQ(r.regions.size(), 1u);
+    ASSERT_EQ(r.regions[0].thresholds.size(), 2u);
+    std::map<int, std::array<int, 3>> partsOfPatch; // points per part (flat, fillet, corner)
+    for (size_t i = 0; i < r.patch.size(); ++i) {
+        ASSERT_GE(r.patch[i], 0) << "point " << i;
+        ++partsOfPatch[r.patch[i]][static_cast<size_t>(s.part[i])];
+    }
+    // A face's points; its patch loses a rim about one fit radius wide to the fillets' (where
+    // the fit's blur lifts the curvature over the lower threshold): (56 - 4)^2 of 56^2 points
+    // is 0.86 of them.
+    const double facePoints = std::count(s.part.begin(), s.part.end(), 0) / 6.0;
+    int flat = 0, fillet = 0, corner = 0;
+    for (const auto& [patch, count] : partsOfPatch) {
+        const int total = count[0] + count[1] + count[2];
+        if (count[0] == total) {
+            ++flat;
+            EXPECT_GT(total, 0.85 * facePoints) << "patch " << patch;
+            EXPECT_LE(total, facePoints + 1) << "patch " << patch;
+        } else if (count[2] > total / 2) {
+            ++corner;
+        } else if (count[1] > total / 2) {
+            ++fillet;
+            EXPECT_GT(count[1], 0.95 * std::count(s.part.begin(), s.part.end(), 1));
+        } else {
+            ADD_FAILURE() << "patch " << patch << " mixes the parts: " << count[0] << " flat, "
+                          << count[1] << " fillet, " << count[2] << " corner points";
+        }
+    }
+    EXPECT_EQ(flat, 6);
+    EXPECT_EQ(corner, 8);
+    EXPECT_EQ(fillet, 1);
 }
 
 TEST(Extraction, NoisyRoundedCubeGivesTheSameClosedLoops)
