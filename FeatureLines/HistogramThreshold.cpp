@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace featurelines {
 
@@ -29,17 +31,42 @@ void checkBins(int bins)
     }
 }
 
+/// Values from this many on are swept by the threads.
+constexpr long parallelValues = 65536;
+
 void checkValues(const std::vector<double>& values)
 {
     if (values.empty()) {
         throw std::invalid_argument("histogram: there are no values to build it from");
     }
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!std::isfinite(values[i])) {
-            throw std::invalid_argument("histogram: value " + std::to_string(i) + " is " +
-                                        (std::isnan(values[i]) ? "NaN" : "infinite"));
+    const long n = static_cast<long>(values.size());
+    long first = n; // the first value that is not finite
+#pragma omp parallel for schedule(static, 16384) reduction(min : first) if (n >= parallelValues)
+    for (long i = 0; i < n; ++i) {
+        if (!std::isfinite(values[static_cast<std::size_t>(i)])) {
+            first = std::min(first, i);
         }
     }
+    if (first < n) {
+        const double v = values[static_cast<std::size_t>(first)];
+        throw std::invalid_argument("histogram: value " + std::to_string(first) + " is " +
+                                    (std::isnan(v) ? "NaN" : "infinite"));
+    }
+}
+
+/// The least and the largest value (finite values).
+std::pair<double, double> valueRange(const std::vector<double>& values)
+{
+    const long n = static_cast<long>(values.size());
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static, 16384) reduction(min : lo) reduction(max : hi) \
+    if (n >= parallelValues)
+    for (long i = 0; i < n; ++i) {
+        lo = std::min(lo, values[static_cast<std::size_t>(i)]);
+        hi = std::max(hi, values[static_cast<std::size_t>(i)]);
+    }
+    return {lo, hi};
 }
 
 void checkOptions(const ThresholdOptions& options)
@@ -64,7 +91,7 @@ std::vector<double> dropOutliers(const std::vector<double>& values, double perce
     const std::size_t n = values.size();
     const auto dropped = static_cast<std::size_t>(std::floor(n * percent / 100.0));
     if (dropped == 0) {
-        cut = *std::max_element(values.begin(), values.end());
+        cut = valueRange(values).second;
         return values;
     }
     std::vector<double> sorted(values);
@@ -79,6 +106,55 @@ std::vector<double> dropOutliers(const std::vector<double>& values, double perce
         }
     }
     return kept;
+}
+
+/// The histogram of finite values whose least and largest are lo and hi.
+Histogram histogramOf(const std::vector<double>& values, int bins, double lo, double hi)
+{
+    Histogram h;
+    h.minimum = lo;
+    h.maximum = hi;
+    h.counts.assign(static_cast<std::size_t>(bins), 0);
+    if (h.maximum == h.minimum) {
+        h.counts[0] = static_cast<long>(values.size());
+        return h;
+    }
+    if (!std::isfinite(h.maximum - h.minimum)) {
+        throw std::invalid_argument("histogram: the values span more than a double can hold (" +
+                                    number(h.minimum) + " to " + number(h.maximum) + ")");
+    }
+    // Sec. 2.1: bin i holds min + i |bin| <= v < min + (i+1) |bin|; the last also holds max.
+    h.binWidth = (h.maximum - h.minimum) / bins;
+    if (!(h.binWidth > 0.0)) {
+        throw std::invalid_argument("histogram: the values " + number(h.minimum) + " to " +
+                                    number(h.maximum) + " are too close to split into " +
+                                    std::to_string(bins) + " bins");
+    }
+    const auto binOf = [&](double v) {
+        const double position = std::floor((v - h.minimum) / h.binWidth);
+        return std::clamp(static_cast<int>(std::min(position, double(bins))), 0, bins - 1);
+    };
+    const long n = static_cast<long>(values.size());
+    // Many values into not too many bins: each thread counts into bins of its own.
+    if (n >= parallelValues && bins <= n / 16) {
+#pragma omp parallel
+        {
+            std::vector<long> own(static_cast<std::size_t>(bins), 0);
+#pragma omp for schedule(static, 16384) nowait
+            for (long i = 0; i < n; ++i) {
+                ++own[static_cast<std::size_t>(binOf(values[static_cast<std::size_t>(i)]))];
+            }
+#pragma omp critical
+            for (int b = 0; b < bins; ++b) {
+                h.counts[static_cast<std::size_t>(b)] += own[static_cast<std::size_t>(b)];
+            }
+        }
+        return h;
+    }
+    for (double v : values) {
+        ++h.counts[static_cast<std::size_t>(binOf(v))];
+    }
+    return h;
 }
 
 struct Candidate
@@ -168,13 +244,13 @@ ThresholdResult search(const std::vector<double>& values, const ThresholdOptions
     if (kept.empty()) {
         throw std::invalid_argument(std::string("threshold: there are no values") + where);
     }
-    const auto [lo, hi] = std::minmax_element(kept.begin(), kept.end());
-    if (*lo == *hi) {
+    const auto [lo, hi] = valueRange(kept);
+    if (lo == hi) {
         throw std::invalid_argument(std::string("threshold: all values") + where + " are equal (" +
-                                    number(*lo) + "), there is no valley to put a threshold in");
+                                    number(lo) + "), there is no valley to put a threshold in");
     }
 
-    result.histogram = buildHistogram(kept, options.bins);
+    result.histogram = histogramOf(kept, options.bins, lo, hi);
     const std::vector<long>& h = result.histogram.counts;
     const int L = result.histogram.bins();
     const double minPeak = options.minPeakPercent / 100.0 * static_cast<double>(kept.size());
@@ -209,32 +285,8 @@ Histogram buildHistogram(const std::vector<double>& values, int bins)
 {
     checkBins(bins);
     checkValues(values);
-    Histogram h;
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    h.minimum = *lo;
-    h.maximum = *hi;
-    h.counts.assign(static_cast<std::size_t>(bins), 0);
-    if (h.maximum == h.minimum) {
-        h.counts[0] = static_cast<long>(values.size());
-        return h;
-    }
-    if (!std::isfinite(h.maximum - h.minimum)) {
-        throw std::invalid_argument("histogram: the values span more than a double can hold (" +
-                                    number(h.minimum) + " to " + number(h.maximum) + ")");
-    }
-    // Sec. 2.1: bin i holds min + i |bin| <= v < min + (i+1) |bin|; the last also holds max.
-    h.binWidth = (h.maximum - h.minimum) / bins;
-    if (!(h.binWidth > 0.0)) {
-        throw std::invalid_argument("histogram: the values " + number(h.minimum) + " to " +
-                                    number(h.maximum) + " are too close to split into " +
-                                    std::to_string(bins) + " bins");
-    }
-    for (double v : values) {
-        const double position = std::floor((v - h.minimum) / h.binWidth);
-        const int bin = std::clamp(static_cast<int>(std::min(position, double(bins))), 0, bins - 1);
-        ++h.counts[static_cast<std::size_t>(bin)];
-    }
-    return h;
+    const auto [lo, hi] = valueRange(values);
+    return histogramOf(values, bins, lo, hi);
 }
 
 ThresholdResult findThreshold(const std::vector<double>& values, const ThresholdOptions& options)

@@ -3,9 +3,11 @@
 // rounded cube whose three patches have known mean curvature (Fig. 2-5 of the paper).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -114,6 +116,36 @@ TEST(HistogramThreshold, CountsSumToTheValues)
     for (int bins : {2, 3, 50, 997, 10000}) {
         const Histogram h = buildHistogram(values, bins);
         EXPECT_EQ(std::accumulate(h.counts.begin(), h.counts.end(), 0L), 10000) << bins;
+    }
+}
+
+TEST(HistogramThreshold, ManyValuesAreBinnedByTheRule)
+{
+    // 300 000 values (the threads count them) on the grid k / 1000, k = 0 .. 4000, in [0, 4]:
+    // with 8 bins of width 0.5, bin b holds the k with 500 b <= k < 500 (b + 1), the last
+    // also k = 4000. Each k appears (k mod 7) + 71 times, in a seeded shuffled order.
+    std::vector<double> values;
+    std::vector<long> expected(8, 0);
+    for (int k = 0; k <= 4000; ++k) {
+        const int copies = k % 7 + 71;
+        values.insert(values.end(), static_cast<std::size_t>(copies), k / 1000.0);
+        expected[static_cast<std::size_t>(std::min(k / 500, 7))] += copies;
+    }
+    std::shuffle(values.begin(), values.end(), std::mt19937(3));
+    ASSERT_GE(values.size(), 280000u);
+    const Histogram h = buildHistogram(values, 8);
+    EXPECT_DOUBLE_EQ(h.minimum, 0.0);
+    EXPECT_DOUBLE_EQ(h.maximum, 4.0);
+    EXPECT_EQ(h.counts, expected);
+    // The first value that is not finite is the one named, wherever the threads meet them.
+    values[150000] = std::numeric_limits<double>::quiet_NaN();
+    values[170000] = std::numeric_limits<double>::infinity();
+    values[290000] = std::numeric_limits<double>::quiet_NaN();
+    try {
+        buildHistogram(values, 8);
+        ADD_FAILURE() << "no error for NaN values";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("value 150000 is NaN"), std::string::npos) << e.what();
     }
 }
 
