@@ -60,8 +60,7 @@ std::pair<double, double> valueRange(const std::vector<double>& values)
     const long n = static_cast<long>(values.size());
     double lo = std::numeric_limits<double>::infinity();
     double hi = -std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static, 16384) reduction(min : lo) reduction(max : hi) \
-    if (n >= parallelValues)
+#pragma omp parallel for schedule(static, 16384) reduction(min : lo) reduction(max : hi)
     for (long i = 0; i < n; ++i) {
         lo = std::min(lo, values[static_cast<std::size_t>(i)]);
         hi = std::max(hi, values[static_cast<std::size_t>(i)]);
