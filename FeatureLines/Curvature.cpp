@@ -82,6 +82,104 @@ bool solveNormalEquations(const double (&m)[21], const double (&r)[6], double (&
     return true;
 }
 
+/// A point's frame for the fit: the axes (u, v, n) of its tangent plane, each divided by the
+/// neighbourhood's radius so that the coordinates come out in units of it (the normal
+/// equations then mix terms of one magnitude, x^4 next to 1, whatever the unit of the cloud).
+struct Frame
+{
+    bool valid = false;
+    double scale = 0.0;
+    double u[3], v[3], w[3];
+};
+
+Frame frameOf(const NormalMatrix& normals, const Neighbourhoods& N, Eigen::Index i, int k)
+{
+    Frame f;
+    const Eigen::Vector3d normal = normals.row(i).transpose();
+    const double length = normal.norm();
+    const double radius = std::sqrt(N.squaredDistances(i, k - 1));
+    if (!(length > 0.0) || !(radius > 0.0) || !std::isfinite(length)) {
+        return f;
+    }
+    f.valid = true;
+    f.scale = 1.0 / radius;
+    const Eigen::Vector3d w = normal / length;
+    const Eigen::Vector3d u0 = w.unitOrthogonal();
+    const Eigen::Vector3d u = u0 * f.scale;
+    const Eigen::Vector3d v = w.cross(u0) * f.scale;
+    const Eigen::Vector3d ws = w * f.scale;
+    for (int d = 0; d < 3; ++d) {
+        f.u[d] = u(d);
+        f.v[d] = v(d);
+        f.w[d] = ws(d);
+    }
+    return f;
+}
+
+/// The sums of the normal equations A^T A c = A^T z of the rows (x^2, xy, y^2, x, y, 1); the
+/// point itself is the row (0, 0, 0, 0, 0, 1) with z = 0. The 21 entries of the symmetric
+/// A^T A are sums of the 15 monomials x^i y^j, i + j <= 4 (x^2 y^2 stands at two places),
+/// summed by hand: s[0..4] degree 4 (x^4 .. y^4), s[5..8] degree 3, s[9..11] degree 2,
+/// s[12..13] degree 1; r the right-hand side. T is a double, or a pair of them for two points
+/// at once (the same operations, lane by lane).
+template <class T> struct Sums
+{
+    T s[14] = {};
+    T r[6] = {};
+
+    void add(T dx, T dy, T dz, const T (&u)[3], const T (&v)[3], const T (&w)[3])
+    {
+        const T x = dx * u[0] + dy * u[1] + dz * u[2];
+        const T y = dx * v[0] + dy * v[1] + dz * v[2];
+        const T z = dx * w[0] + dy * w[1] + dz * w[2];
+        const T xx = x * x, xy = x * y, yy = y * y;
+        const T monomial[14] = {xx * xx, xx * xy, xx * yy, xy * yy, yy * yy, xx * x, xx * y,
+                                x * yy,  yy * y,  xx,      xy,      yy,      x,      y};
+        for (int t = 0; t < 14; ++t) {
+            s[t] += monomial[t];
+        }
+        r[0] += z * xx;
+        r[1] += z * xy;
+        r[2] += z * yy;
+        r[3] += z * x;
+        r[4] += z * y;
+        r[5] += z;
+    }
+};
+
+/// Two doubles in one SSE register where the processor has one (GCC and Clang vectors).
+typedef double DoublePair __attribute__((vector_size(16)));
+
+/// The mean curvature from the sums of one point (0 when the fit is degenerate or not
+/// finite).
+double curvatureFromSums(const double (&s)[14], const double (&r)[6], int k, double scale,
+                         bool signedCurvature)
+{
+    // Upper triangle of A^T A row by row, rows and columns (x^2, xy, y^2, x, y, 1).
+    const double m[21] = {s[0],   s[1],  s[2],  s[5],  s[6],  s[9], //
+                          s[2],   s[3],  s[6],  s[7],  s[10],       //
+                          s[4],   s[7],  s[8],  s[11],              //
+                          s[9],   s[10], s[12],                     //
+                          s[11],  s[13],                            //
+                          k + 1.0};
+    double c[6];
+    if (!solveNormalEquations(m, r, c)) {
+        return 0.0;
+    }
+    const double a = c[0], b = c[1], cc = c[2], d = c[3], e = c[4];
+    // Mean curvature of the graph z(x, y) at the origin, gradient (d, e) included:
+    // H = ((1 + e^2) z_xx - 2 d e z_xy + (1 + d^2) z_yy) / (2 (1 + d^2 + e^2)^(3/2)).
+    const double g = 1.0 + d * d + e * e;
+    const double graphH = ((1.0 + e * e) * 2.0 * a - 2.0 * d * e * b + (1.0 + d * d) * 2.0 * cc) /
+                          (2.0 * g * std::sqrt(g));
+    // Back to the cloud's unit (second derivatives scale with 1/radius). The graph bends
+    // towards +n where graphH > 0; the signed convention is positive where the surface bends
+    // away from the normal (an outward-oriented sphere has +1/r).
+    const double signedH = -graphH * scale;
+    const double value = signedCurvature ? signedH : std::abs(signedH);
+    return std::isfinite(value) ? value : 0.0;
+}
+
 } // namespace
 
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
@@ -102,81 +200,72 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
 
     const Eigen::Index n = P.rows();
     Eigen::VectorXd H(n);
-#pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
-    for (Eigen::Index i = 0; i < n; ++i) {
-        // Sec. 2.1: curv(p) from a quadric through the k nearest neighbours of p, here the
-        // height function over p's tangent plane, origin at p, axes (u, v, n).
-        const Eigen::Vector3d normal = normals.row(i).transpose();
-        const double length = normal.norm();
-        // Coordinates are divided by the neighbourhood radius so that the normal equations mix
-        // terms of one magnitude (x^4 next to 1) whatever the unit of the cloud.
-        const double radius = std::sqrt(N.squaredDistances(i, k - 1));
-        if (!(length > 0.0) || !(radius > 0.0) || !std::isfinite(length)) {
-            H(i) = 0.0;
-            continue;
-        }
-        // The axes carry the factor 1 / radius: the coordinates below come out divided by it.
-        const double scale = 1.0 / radius;
-        const Eigen::Vector3d w = normal / length;
-        const Eigen::Vector3d u0 = w.unitOrthogonal();
-        const Eigen::Vector3d u = u0 * scale;
-        const Eigen::Vector3d v = w.cross(u0) * scale;
-        const Eigen::Vector3d ws = w * scale;
-
-        // Normal equations A^T A c = A^T z of the rows (x^2, xy, y^2, x, y, 1); the point
-        // itself is the row (0, 0, 0, 0, 0, 1) with z = 0. The 21 entries of the symmetric
-        // A^T A are sums of the 15 monomials x^i y^j, i + j <= 4 (x^2 y^2 stands at two places),
-        // summed by hand: s[0..4] degree 4 (x^4 .. y^4), s[5..8] degree 3, s[9..11] degree 2,
-        // s[12..13] degree 1.
-        double s[14] = {};
-        double r[6] = {};
+    // Sec. 2.1: curv(p) from a quadric through the k nearest neighbours of p, here the height
+    // function over p's tangent plane, origin at p, axes (u, v, n). Two points at a time: the
+    // sums of both in the two lanes of a pair of doubles.
+    const auto one = [&](Eigen::Index i, const Frame& f) {
+        Sums<double> sums;
         const double* o = P.row(i).data();
         const int* neighbours = N.indices.row(i).data();
         for (int j = 0; j < k; ++j) {
             const double* p = P.row(neighbours[j]).data();
-            const double dx = p[0] - o[0], dy = p[1] - o[1], dz = p[2] - o[2];
-            const double x = dx * u(0) + dy * u(1) + dz * u(2);
-            const double y = dx * v(0) + dy * v(1) + dz * v(2);
-            const double z = dx * ws(0) + dy * ws(1) + dz * ws(2);
-            const double xx = x * x, xy = x * y, yy = y * y;
-            const double monomial[14] = {xx * xx, xx * xy, xx * yy, xy * yy, yy * yy,
-                                         xx * x,  xx * y,  x * yy,  yy * y,  xx,
-                                         xy,      yy,      x,       y};
-            for (int t = 0; t < 14; ++t) {
-                s[t] += monomial[t];
-            }
-            r[0] += z * xx;
-            r[1] += z * xy;
-            r[2] += z * yy;
-            r[3] += z * x;
-            r[4] += z * y;
-            r[5] += z;
+            sums.add(p[0] - o[0], p[1] - o[1], p[2] - o[2], f.u, f.v, f.w);
         }
-        // Upper triangle of A^T A row by row, rows and columns (x^2, xy, y^2, x, y, 1).
-        const double m[21] = {s[0],   s[1],  s[2],  s[5],  s[6],  s[9], //
-                              s[2],   s[3],  s[6],  s[7],  s[10],       //
-                              s[4],   s[7],  s[8],  s[11],              //
-                              s[9],   s[10], s[12],                     //
-                              s[11],  s[13],                            //
-                              k + 1.0};
-        double c[6];
-        if (!solveNormalEquations(m, r, c)) {
-            H(i) = 0.0;
+        H(i) = curvatureFromSums(sums.s, sums.r, k, f.scale, options.signedCurvature);
+    };
+    const Eigen::Index pairs = n / 2;
+#pragma omp parallel for schedule(static, 2048) num_threads(threadCount(options.threads))
+    for (Eigen::Index pair = 0; pair < pairs; ++pair) {
+        const Eigen::Index i = 2 * pair;
+        const Frame f0 = frameOf(normals, N, i, k), f1 = frameOf(normals, N, i + 1, k);
+        if (!f0.valid || !f1.valid) {
+            for (const Eigen::Index at : {i, i + 1}) {
+                const Frame& f = at == i ? f0 : f1;
+                if (f.valid) {
+                    one(at, f);
+                } else {
+                    H(at) = 0.0;
+                }
+            }
             continue;
         }
-        const double a = c[0], b = c[1], cc = c[2], d = c[3], e = c[4];
-        // Mean curvature of the graph z(x, y) at the origin, gradient (d, e) included:
-        // H = ((1 + e^2) z_xx - 2 d e z_xy + (1 + d^2) z_yy) / (2 (1 + d^2 + e^2)^(3/2)).
-        const double g = 1.0 + d * d + e * e;
-        const double graphH =
-            ((1.0 + e * e) * 2.0 * a - 2.0 * d * e * b + (1.0 + d * d) * 2.0 * cc) /
-            (2.0 * g * std::sqrt(g));
-        // Back to the cloud's unit (second derivatives scale with 1/radius). The graph bends
-        // towards +n where graphH > 0; the signed convention is positive where the surface
-        // bends away from the normal (an outward-oriented sphere has +1/r).
-        const double signedH = -graphH * scale;
-        const double value = options.signedCurvature ? signedH : std::abs(signedH);
-        H(i) = std::isfinite(value) ? value : 0.0;
+        DoublePair u[3], v[3], w[3];
+        for (int d = 0; d < 3; ++d) {
+            u[d] = DoublePair{f0.u[d], f1.u[d]};
+            v[d] = DoublePair{f0.v[d], f1.v[d]};
+            w[d] = DoublePair{f0.w[d], f1.w[d]};
+        }
+        Sums<DoublePair> sums;
+        const double* o0 = P.row(i).data();
+        const double* o1 = P.row(i + 1).data();
+        const int* n0 = N.indices.row(i).data();
+        const int* n1 = N.indices.row(i + 1).data();
+        for (int j = 0; j < k; ++j) {
+            const double* p0 = P.row(n0[j]).data();
+            const double* p1 = P.row(n1[j]).data();
+            sums.add(DoublePair{p0[0] - o0[0], p1[0] - o1[0]},
+                     DoublePair{p0[1] - o0[1], p1[1] - o1[1]},
+                     DoublePair{p0[2] - o0[2], p1[2] - o1[2]}, u, v, w);
+        }
+        for (int lane = 0; lane < 2; ++lane) {
+            double s[14], r[6];
+            for (int t = 0; t < 14; ++t) {
+                s[t] = sums.s[t][lane];
+            }
+            for (int t = 0; t < 6; ++t) {
+                r[t] = sums.r[t][lane];
+            }
+            H(i + lane) = curvatureFromSums(s, r, k, lane == 0 ? f0.scale : f1.scale,
+                                            options.signedCurvature);
+        }
+    }
+    if (n % 2 == 1) {
+        const Frame f = frameOf(normals, N, n - 1, k);
+        if (f.valid) {
+            one(n - 1, f);
+        } else {
+            H(n - 1) = 0.0;
+        }
     }
     return H;
 }

@@ -57,6 +57,29 @@ TEST(Curvature, SphereIsOneOverRadius)
     EXPECT_LT(worstRelativeError(curvatureOf(s.points), 1.0 / 20.0), 0.02);
 }
 
+TEST(Curvature, EachPointIsFittedOnItsOwn)
+{
+    // The points are fitted two at a time; a point without a normal gives 0 and changes
+    // nothing for the point beside it. An odd number of points: the last is fitted alone.
+    shapes::Sample s = shapes::sphere(20.0, 1.0, 2);
+    const Eigen::Index n = s.points.rows() % 2 == 1 ? s.points.rows() : s.points.rows() - 1;
+    const PointMatrix P = s.points.topRows(n);
+    const Neighbourhoods N = nearestNeighbours(P, {16, 0});
+    const NormalMatrix normals = pcaNormals(P, N).normals;
+    const Eigen::VectorXd H = meanCurvature(P, normals, N);
+    EXPECT_LT(worstRelativeError(H, 1.0 / 20.0), 0.02);
+    NormalMatrix some = normals;
+    const std::vector<Eigen::Index> without{0, 5, 8, 9, n - 1};
+    for (const Eigen::Index i : without) {
+        some.row(i).setZero();
+    }
+    const Eigen::VectorXd G = meanCurvature(P, some, N);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const bool zeroed = std::find(without.begin(), without.end(), i) != without.end();
+        EXPECT_EQ(G(i), zeroed ? 0.0 : H(i)) << "point " << i;
+    }
+}
+
 TEST(Curvature, SphereOfOtherUnitScalesInversely)
 {
     // The same sphere in a unit 1000 times smaller: curvature 1000 times larger.
