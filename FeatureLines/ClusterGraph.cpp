@@ -16,48 +16,13 @@
 #include <unordered_set>
 #include <utility>
 
+#include "FeatureLines/DisjointSets.h"
+
 namespace featurelines {
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-class DisjointSets
-{
-public:
-    explicit DisjointSets(int size) : parent_(size)
-    {
-        std::iota(parent_.begin(), parent_.end(), 0);
-    }
-
-    int find(int a)
-    {
-        while (parent_[a] != a) {
-            parent_[a] = parent_[parent_[a]];
-            a = parent_[a];
-        }
-        return a;
-    }
-
-    /// Joins the sets of a and b; false when they were one set already. The smaller root
-    /// survives, so the result does not depend on the order of the calls.
-    bool unite(int a, int b)
-    {
-        a = find(a);
-        b = find(b);
-        if (a == b) {
-            return false;
-        }
-        if (b < a) {
-            std::swap(a, b);
-        }
-        parent_[b] = a;
-        return true;
-    }
-
-private:
-    std::vector<int> parent_;
-};
 
 /// A uniform hash grid over the node centres, for the radius queries of G_extended and of
 /// the reconnection (a few thousand nodes: no tree needed).

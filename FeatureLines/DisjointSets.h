@@ -44,6 +44,26 @@ public:
     /// back as `a` for the next neighbour of the same point, it spares most of a's look-ups.
     int join(int a, int b)
     {
+        bool linked = false;
+        return link(a, b, linked);
+    }
+
+    /// Joins the sets of a and b; thread-safe. False when they were one set already (this
+    /// call linked nothing).
+    bool unite(int a, int b)
+    {
+        bool linked = false;
+        link(a, b, linked);
+        return linked;
+    }
+
+    /// Per element the smallest element of its set (a parallel loop).
+    std::vector<int> representatives() const;
+
+private:
+    /// join() and unite(): `linked` tells whether this call hung one root under the other.
+    int link(int a, int b, bool& linked)
+    {
         for (;;) {
             a = find(a);
             b = find(b);
@@ -57,15 +77,12 @@ public:
             // it elsewhere: then look again.
             int expected = a;
             if (parent_[a].compare_exchange_strong(expected, b, std::memory_order_relaxed)) {
+                linked = true;
                 return b;
             }
         }
     }
 
-    /// Per element the smallest element of its set (a parallel loop).
-    std::vector<int> representatives() const;
-
-private:
     int n_;
     std::unique_ptr<std::atomic<int>[]> parent_;
 };

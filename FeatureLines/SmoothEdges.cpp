@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -931,11 +930,7 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
         return 0;
     }
     // Pieces: lines joined through shared junctions.
-    std::vector<int> parent(lineCount);
-    std::iota(parent.begin(), parent.end(), 0);
-    std::function<int(int)> find = [&](int x) {
-        return parent[x] == x ? x : parent[x] = find(parent[x]);
-    };
+    DisjointSets sets(static_cast<int>(lineCount));
     std::map<int, int> lineAtJunction;
     for (size_t l = 0; l < lineCount; ++l) {
         for (int j : {network.lines[l].startJunction, network.lines[l].endJunction}) {
@@ -944,7 +939,7 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
             }
             auto [it, inserted] = lineAtJunction.emplace(j, static_cast<int>(l));
             if (!inserted) {
-                parent[find(static_cast<int>(l))] = find(it->second);
+                sets.join(static_cast<int>(l), it->second);
             }
         }
     }
@@ -960,7 +955,7 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
     std::map<int, Piece> pieces;
     for (size_t l = 0; l < lineCount; ++l) {
         const Polyline& line = network.lines[l];
-        Piece& p = pieces[find(static_cast<int>(l))];
+        Piece& p = pieces[sets.find(static_cast<int>(l))];
         for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
             p.length += (line.points.row(i) - line.points.row(i - 1)).norm();
         }
@@ -995,7 +990,7 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
     std::map<int, int> newJunction;
     int dropped = 0;
     for (size_t l = 0; l < lineCount; ++l) {
-        if (!keepPiece[static_cast<size_t>(find(static_cast<int>(l)))]) {
+        if (!keepPiece[static_cast<size_t>(sets.find(static_cast<int>(l)))]) {
             ++dropped;
             continue;
         }

@@ -99,6 +99,28 @@ TEST(DisjointSets, JoinReturnsAnElementOfTheJoinedSet)
     }
 }
 
+TEST(DisjointSets, UniteTellsWhetherItJoinedTwoSets)
+{
+    DisjointSets sets(6);
+    EXPECT_TRUE(sets.unite(4, 2));
+    EXPECT_FALSE(sets.unite(2, 4));
+    EXPECT_TRUE(sets.unite(5, 4));
+    EXPECT_FALSE(sets.unite(5, 2));
+    EXPECT_EQ(sets.find(5), 2);
+    // On threads: every successful unite removes one set, so a grid cut in two parts sees
+    // exactly nodes - 2 of them, whatever the threads' order.
+    const int w = 120, h = 90, cut = 50;
+    const std::vector<std::pair<int, int>> edges = cutGridEdges(w, h, cut);
+    DisjointSets grid(w * h);
+    long linked = 0;
+#pragma omp parallel for schedule(dynamic, 64) num_threads(2) reduction(+ : linked)
+    for (long e = 0; e < static_cast<long>(edges.size()); ++e) {
+        const auto [a, b] = edges[static_cast<size_t>(e)];
+        linked += grid.unite(a, b) ? 1 : 0;
+    }
+    EXPECT_EQ(linked, w * h - 2);
+}
+
 TEST(DisjointSets, EmptyAndNegativeSizes)
 {
     EXPECT_TRUE(DisjointSets(0).representatives().empty());
