@@ -13,8 +13,7 @@ namespace featurelines {
 namespace {
 
 /// p + factor (mean of the umbrella - p) for the point p, from the sum of its umbrella's
-/// coordinates (in the umbrella's order, from zero) and its size: Eigen's arithmetic for the
-/// same row expression.
+/// coordinates (in the umbrella's order, from zero) and its size.
 inline void moveTowards(const double* point, const double (&sum)[3], int size, double factor,
                         double* out)
 {
@@ -22,6 +21,25 @@ inline void moveTowards(const double* point, const double (&sum)[3], int size, d
         const double mean = sum[d] / size;
         out[d] = point[d] + factor * (mean - point[d]);
     }
+}
+
+/// Row `out` of `to`: the point at row `point` of `from` moved by `factor` towards the mean of
+/// the rows umbrella[0 .. size) of `from` (summed in that order), or copied when size is 0.
+inline void umbrellaRow(const double* from, double* to, std::ptrdiff_t point, std::ptrdiff_t out,
+                        const int* umbrella, int size, double factor)
+{
+    if (size == 0) {
+        std::copy(from + 3 * point, from + 3 * point + 3, to + 3 * out);
+        return;
+    }
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (int j = 0; j < size; ++j) {
+        const double* q = from + 3 * static_cast<std::ptrdiff_t>(umbrella[j]);
+        sum[0] += q[0];
+        sum[1] += q[1];
+        sum[2] += q[2];
+    }
+    moveTowards(from + 3 * point, sum, size, factor, to + 3 * out);
 }
 
 /// One umbrella step of the rows [first, last) of a subset of every row, whose umbrellas are
@@ -48,16 +66,8 @@ void umbrellaStep(const double* from, double* to, const int* neighbours, int k, 
         moveTowards(from + 3 * s, sa, k, factor, to + 3 * s);
         moveTowards(from + 3 * (s + 1), sb, k, factor, to + 3 * (s + 1));
     }
-    for (; s < last; ++s) {
-        const int* a = neighbours + s * k;
-        double sa[3] = {0.0, 0.0, 0.0};
-        for (int j = 0; j < k; ++j) {
-            const double* qa = from + 3 * static_cast<std::ptrdiff_t>(a[j]);
-            sa[0] += qa[0];
-            sa[1] += qa[1];
-            sa[2] += qa[2];
-        }
-        moveTowards(from + 3 * s, sa, k, factor, to + 3 * s);
+    if (s < last) {
+        umbrellaRow(from, to, s, s, neighbours + s * k, k, factor);
     }
 }
 
@@ -135,18 +145,8 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
         }
 #pragma omp parallel for schedule(static, 4096)
         for (Eigen::Index s = 0; s < m; ++s) {
-            const int i = subset[s];
-            const int count = offsets[s + 1] - offsets[s];
-            if (count == 0) {
-                moved.row(s) = current.row(i);
-                continue;
-            }
-            Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-            for (int j = offsets[s]; j < offsets[s + 1]; ++j) {
-                mean += current.row(umbrella[j]);
-            }
-            mean /= count;
-            moved.row(s) = current.row(i) + factor * (mean - current.row(i));
+            umbrellaRow(current.data(), moved.data(), subset[s], s, umbrella + offsets[s],
+                        offsets[s + 1] - offsets[s], factor);
         }
 #pragma omp parallel for schedule(static, 4096)
         for (Eigen::Index s = 0; s < m; ++s) {
