@@ -204,6 +204,10 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     // function over p's tangent plane, origin at p, axes (u, v, n). Two points at a time: the
     // sums of both in the two lanes of a pair of doubles.
     const auto one = [&](Eigen::Index i, const Frame& f) {
+        if (!f.valid) {
+            H(i) = 0.0;
+            return;
+        }
         Sums<double> sums;
         const double* o = P.row(i).data();
         const int* neighbours = N.indices.row(i).data();
@@ -219,14 +223,8 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
         const Eigen::Index i = 2 * pair;
         const Frame f0 = frameOf(normals, N, i, k), f1 = frameOf(normals, N, i + 1, k);
         if (!f0.valid || !f1.valid) {
-            for (const Eigen::Index at : {i, i + 1}) {
-                const Frame& f = at == i ? f0 : f1;
-                if (f.valid) {
-                    one(at, f);
-                } else {
-                    H(at) = 0.0;
-                }
-            }
+            one(i, f0);
+            one(i + 1, f1);
             continue;
         }
         DoublePair u[3], v[3], w[3];
@@ -260,12 +258,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
         }
     }
     if (n % 2 == 1) {
-        const Frame f = frameOf(normals, N, n - 1, k);
-        if (f.valid) {
-            one(n - 1, f);
-        } else {
-            H(n - 1) = 0.0;
-        }
+        one(n - 1, frameOf(normals, N, n - 1, k));
     }
     return H;
 }
