@@ -16,6 +16,7 @@
 #include "FeatureLines/DisjointSets.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
+#include "FeatureLines/Normals.h"
 
 namespace featurelines {
 
@@ -96,31 +97,7 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
 
 void requireSurface(const PointMatrix& P)
 {
-    // Second moments about the first point (far from the origin, moments about it would lose
-    // their digits), summed in blocks of fixed size on the threads and then block by block:
-    // the same sums at any number of threads.
-    const Eigen::Index n = P.rows();
-    constexpr Eigen::Index block = 16384;
-    const Eigen::Index blocks = (n + block - 1) / block;
-    const Eigen::RowVector3d origin = P.row(0);
-    std::vector<Eigen::Matrix<double, 3, 4>> sums(static_cast<size_t>(blocks));
-#pragma omp parallel for schedule(static, 1)
-    for (Eigen::Index b = 0; b < blocks; ++b) {
-        Eigen::Matrix<double, 3, 4> s = Eigen::Matrix<double, 3, 4>::Zero();
-        for (Eigen::Index i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-            const Eigen::Vector3d d = (P.row(i) - origin).transpose();
-            s.leftCols<3>() += d * d.transpose();
-            s.col(3) += d;
-        }
-        sums[static_cast<size_t>(b)] = s;
-    }
-    Eigen::Matrix<double, 3, 4> total = Eigen::Matrix<double, 3, 4>::Zero();
-    for (const auto& s : sums) {
-        total += s;
-    }
-    const Eigen::Vector3d mean = total.col(3) / static_cast<double>(n);
-    const Eigen::Matrix3d covariance =
-        total.leftCols<3>() / static_cast<double>(n) - mean * mean.transpose();
+    const Eigen::Matrix3d covariance = covarianceOf(P);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance, Eigen::EigenvaluesOnly);
     const Eigen::Vector3d lambda = solver.eigenvalues(); // ascending
     if (!(lambda[2] > 0.0) || lambda[1] <= 1e-12 * lambda[2]) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/Normals.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -127,6 +128,34 @@ void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::
     for (long r = 0; r < static_cast<long>(rows.size()); ++r) {
         fitNormal(P, N, rows[static_cast<size_t>(r)], k, normals, nullptr);
     }
+}
+
+Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride)
+{
+    if (P.rows() == 0 || stride < 1) {
+        throw std::invalid_argument("covariance: needs a point and a stride of at least 1");
+    }
+    const Eigen::Index samples = (P.rows() + stride - 1) / stride;
+    constexpr Eigen::Index block = 16384;
+    const Eigen::Index blocks = (samples + block - 1) / block;
+    const Eigen::RowVector3d origin = P.row(0);
+    std::vector<Eigen::Matrix<double, 3, 4>> sums(static_cast<size_t>(blocks));
+#pragma omp parallel for schedule(static, 1)
+    for (Eigen::Index b = 0; b < blocks; ++b) {
+        Eigen::Matrix<double, 3, 4> s = Eigen::Matrix<double, 3, 4>::Zero();
+        for (Eigen::Index j = b * block; j < std::min(samples, (b + 1) * block); ++j) {
+            const Eigen::Vector3d d = (P.row(j * stride) - origin).transpose();
+            s.leftCols<3>() += d * d.transpose();
+            s.col(3) += d;
+        }
+        sums[static_cast<size_t>(b)] = s;
+    }
+    Eigen::Matrix<double, 3, 4> total = Eigen::Matrix<double, 3, 4>::Zero();
+    for (const auto& s : sums) {
+        total += s;
+    }
+    const Eigen::Vector3d mean = total.col(3) / static_cast<double>(samples);
+    return total.leftCols<3>() / static_cast<double>(samples) - mean * mean.transpose();
 }
 
 } // namespace featurelines

@@ -12,6 +12,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "FeatureLines/Normals.h"
+
 namespace featurelines {
 
 namespace {
@@ -257,21 +259,9 @@ void removeFolds(std::vector<Eigen::Vector3d>& vertices, std::vector<int>& nodes
 
 void requireSurface(const PointMatrix& P, double spacing)
 {
-    // Second moments about the first point (not the origin: far from it they would lose
-    // their digits), over an even stride of at most ~100 000 points.
+    // Over an even stride of at most ~100 000 points.
     const Eigen::Index stride = std::max<Eigen::Index>(1, P.rows() / 100000);
-    const Eigen::RowVector3d origin = P.row(0);
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d products = Eigen::Matrix3d::Zero();
-    double count = 0.0;
-    for (Eigen::Index i = 0; i < P.rows(); i += stride) {
-        const Eigen::Vector3d d = (P.row(i) - origin).transpose();
-        sum += d;
-        products += d * d.transpose();
-        count += 1.0;
-    }
-    const Eigen::Vector3d mean = sum / count;
-    const Eigen::Matrix3d covariance = products / count - mean * mean.transpose();
+    const Eigen::Matrix3d covariance = covarianceOf(P, stride);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance, Eigen::EigenvaluesOnly);
     // The middle eigenvalue is the spread across the cloud's main direction.
     if (std::sqrt(std::max(0.0, solver.eigenvalues()(1))) < spacing) {

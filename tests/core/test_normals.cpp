@@ -83,3 +83,26 @@ TEST(Normals, BadInputThrows)
     EXPECT_THROW(pcaNormals(s.points, N, {9, 0}), std::invalid_argument);
     EXPECT_THROW(pcaNormals(s.points.topRows(20), N), std::invalid_argument);
 }
+
+TEST(Normals, CovarianceOfACubesCornersFarFromTheOrigin)
+{
+    // The corners of a unit cube, each 25 000 times (200 000 rows, many blocks), a million
+    // units from the origin: each coordinate is 0 or 1 with even odds, independently, so the
+    // covariance is I / 4.
+    PointMatrix P(200000, 3);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const int corner = static_cast<int>(i % 8);
+        P.row(i) << 1e6 + (corner & 1), -2e6 + ((corner >> 1) & 1), 3e6 + ((corner >> 2) & 1);
+    }
+    const Eigen::Matrix3d C = covarianceOf(P);
+    EXPECT_LT((C - 0.25 * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-9);
+    // Every eighth row: always the same corner, no spread at all.
+    EXPECT_LT(covarianceOf(P, 8).cwiseAbs().maxCoeff(), 1e-12);
+    // Every second row: x stays 0 (even corners), y and z still spread.
+    const Eigen::Matrix3d half = covarianceOf(P, 2);
+    EXPECT_LT(std::abs(half(0, 0)), 1e-12);
+    EXPECT_NEAR(half(1, 1), 0.25, 1e-9);
+    EXPECT_NEAR(half(2, 2), 0.25, 1e-9);
+    EXPECT_THROW(covarianceOf(PointMatrix(0, 3)), std::invalid_argument);
+    EXPECT_THROW(covarianceOf(P, 0), std::invalid_argument);
+}
