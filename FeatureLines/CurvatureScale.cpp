@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "FeatureLines/MortonOrder.h"
+#include "FeatureLines/Normals.h"
 
 namespace featurelines {
 
@@ -69,14 +70,13 @@ double planeDeviation(const PointMatrix& P, double share)
         throw std::invalid_argument("plane deviation: needs 3 points or more and a share in "
                                     "[0, 1)");
     }
-    const Eigen::RowVector3d centre = P.colwise().mean();
-    const Eigen::Matrix<double, Eigen::Dynamic, 3> D = P.rowwise() - centre;
-    const Eigen::Matrix3d scatter = D.transpose() * D;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
-    const Eigen::Vector3d normal = solver.eigenvectors().col(0); // smallest eigenvalue
+    const Moments moments = momentsOf(P);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(moments.covariance);
+    const Eigen::RowVector3d normal = solver.eigenvectors().col(0).transpose(); // smallest
     std::vector<double> distance(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
-        distance[static_cast<size_t>(i)] = std::abs(D.row(i).dot(normal.transpose()));
+        distance[static_cast<size_t>(i)] = std::abs((P.row(i) - moments.mean).dot(normal));
     }
     const auto at = distance.begin() +
                     std::min<Eigen::Index>(n - 1, static_cast<Eigen::Index>(

@@ -130,10 +130,10 @@ void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::
     }
 }
 
-Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride)
+Moments momentsOf(const PointMatrix& P, Eigen::Index stride)
 {
     if (P.rows() == 0 || stride < 1) {
-        throw std::invalid_argument("covariance: needs a point and a stride of at least 1");
+        throw std::invalid_argument("moments of a cloud: need a point and a stride of at least 1");
     }
     const Eigen::Index samples = (P.rows() + stride - 1) / stride;
     constexpr Eigen::Index block = 16384;
@@ -154,8 +154,14 @@ Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride)
     for (const auto& s : sums) {
         total += s;
     }
-    const Eigen::Vector3d mean = total.col(3) / static_cast<double>(samples);
-    return total.leftCols<3>() / static_cast<double>(samples) - mean * mean.transpose();
+    const Eigen::Vector3d shift = total.col(3) / static_cast<double>(samples);
+    return {origin + shift.transpose(),
+            total.leftCols<3>() / static_cast<double>(samples) - shift * shift.transpose()};
+}
+
+Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride)
+{
+    return momentsOf(P, stride).covariance;
 }
 
 } // namespace featurelines

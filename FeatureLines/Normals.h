@@ -35,10 +35,21 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
 void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::vector<int>& rows,
                       NormalMatrix& normals, const NormalOptions& options = {});
 
-/// The covariance of the rows of P taken `stride` apart (#P >= 1): second moments about the
-/// first row (far from the origin, moments about the origin would lose their digits), summed
-/// in blocks of fixed size on the threads and then block by block, so the same at any number
-/// of threads. The cloud-wide checks (a line, a strip) read its eigenvalues.
+/// The mean and covariance of a cloud's rows.
+struct Moments
+{
+    Eigen::RowVector3d mean;
+    Eigen::Matrix3d covariance;
+};
+
+/// The mean and covariance of the rows of P taken `stride` apart (#P >= 1): first and second
+/// moments about the first row (far from the origin, moments about the origin would lose
+/// their digits), summed in blocks of fixed size on the threads and then block by block, so
+/// the same at any number of threads. The cloud-wide checks (a line, a strip, a plane) read
+/// its eigenvalues and eigenvectors.
+Moments momentsOf(const PointMatrix& P, Eigen::Index stride = 1);
+
+/// momentsOf(P, stride).covariance.
 Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride = 1);
 
 } // namespace featurelines

@@ -120,6 +120,9 @@ TEST(CurvatureScale, PlaneDeviationIsTheNoiseOfAPlaneAndTheBulgeOfACylinder)
     EXPECT_NEAR(planeDeviation(tilted, 0.0), plane.points.col(2).cwiseAbs().maxCoeff(),
                 0.02 * sigma)
         << "the largest distance";
+    // The same plane a million units away: the same distances to the digits left.
+    const PointMatrix far = tilted.rowwise() + Eigen::RowVector3d(1e6, -1e6, 2e6);
+    EXPECT_NEAR(planeDeviation(far, 0.001), planeDeviation(tilted, 0.001), 1e-6);
 
     const double r = 10.0;
     PointMatrix half(10000, 3); // 4 r long: its plane is the one through its two rims

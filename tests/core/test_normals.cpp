@@ -103,6 +103,14 @@ TEST(Normals, CovarianceOfACubesCornersFarFromTheOrigin)
     EXPECT_LT(std::abs(half(0, 0)), 1e-12);
     EXPECT_NEAR(half(1, 1), 0.25, 1e-9);
     EXPECT_NEAR(half(2, 2), 0.25, 1e-9);
+    // The means: the cube's centre, then the one corner of every eighth row, then x at the
+    // even corners' 0 (to the digits a million units allow).
+    const Eigen::RowVector3d centre(1e6 + 0.5, -2e6 + 0.5, 3e6 + 0.5);
+    EXPECT_LT((momentsOf(P).mean - centre).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((momentsOf(P, 8).mean - P.row(0)).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_NEAR(momentsOf(P, 2).mean.x(), 1e6, 1e-9);
+    EXPECT_EQ(momentsOf(P).covariance, C);
     EXPECT_THROW(covarianceOf(PointMatrix(0, 3)), std::invalid_argument);
     EXPECT_THROW(covarianceOf(P, 0), std::invalid_argument);
+    EXPECT_THROW(momentsOf(P, -1), std::invalid_argument);
 }
