@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -150,10 +151,10 @@ template <class T> struct Sums
 /// Two doubles in one SSE register where the processor has one (GCC and Clang vectors).
 typedef double DoublePair __attribute__((vector_size(16)));
 
-/// The mean curvature from the sums of one point (0 when the fit is degenerate or not
-/// finite).
-double curvatureFromSums(const double (&s)[14], const double (&r)[6], int k, double scale,
-                         bool signedCurvature)
+/// Solves the fit whose sums are s and r, over `rows` rows (the count is A^T A's last
+/// diagonal entry, the sum of 1 * 1): the coefficients (a, b, c, d, e, f) of
+/// z = a x^2 + b xy + c y^2 + d x + e y + f in the frame's units. False when degenerate.
+bool solveQuadric(const double (&s)[14], const double (&r)[6], double rows, double (&c)[6])
 {
     // Upper triangle of A^T A row by row, rows and columns (x^2, xy, y^2, x, y, 1).
     const double m[21] = {s[0],   s[1],  s[2],  s[5],  s[6],  s[9], //
@@ -161,9 +162,17 @@ double curvatureFromSums(const double (&s)[14], const double (&r)[6], int k, dou
                           s[4],   s[7],  s[8],  s[11],              //
                           s[9],   s[10], s[12],                     //
                           s[11],  s[13],                            //
-                          k + 1.0};
+                          rows};
+    return solveNormalEquations(m, r, c);
+}
+
+/// The mean curvature from the sums of one point and its k neighbours (0 when the fit is
+/// degenerate or not finite).
+double curvatureFromSums(const double (&s)[14], const double (&r)[6], int k, double scale,
+                         bool signedCurvature)
+{
     double c[6];
-    if (!solveNormalEquations(m, r, c)) {
+    if (!solveQuadric(s, r, k + 1.0, c)) {
         return 0.0;
     }
     const double a = c[0], b = c[1], cc = c[2], d = c[3], e = c[4];
@@ -261,6 +270,28 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
         one(n - 1, frameOf(normals, N, n - 1, k));
     }
     return H;
+}
+
+double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                     Eigen::Index i)
+{
+    const int k = N.k();
+    const Frame f = frameOf(normals, N, i, k);
+    if (!f.valid || k < minimumNeighbours) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    Sums<double> sums;
+    const double* o = P.row(i).data();
+    const int* neighbours = N.indices.row(i).data();
+    for (int j = 0; j < k; ++j) {
+        const double* p = P.row(neighbours[j]).data();
+        sums.add(p[0] - o[0], p[1] - o[1], p[2] - o[2], f.u, f.v, f.w);
+    }
+    double c[6];
+    if (!solveQuadric(sums.s, sums.r, k, c)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return c[5] / f.scale;
 }
 
 } // namespace featurelines

@@ -22,4 +22,11 @@ struct CurvatureOptions
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
                               const Neighbourhoods& N, const CurvatureOptions& options = {});
 
+/// The height at point i of the quadric of meanCurvature() fitted to i's neighbours alone
+/// (all N.k() of them, not i itself), in i's normal frame (length unit). On a smooth surface
+/// the quadric predicts the point to third order, so what remains is the point's noise,
+/// whatever the curvature. NaN when the normal, the neighbourhood or the fit is degenerate.
+double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                     Eigen::Index i);
+
 } // namespace featurelines

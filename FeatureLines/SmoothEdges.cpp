@@ -13,7 +13,6 @@
 #include <string>
 #include <tuple>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 #include "FeatureLines/Boundary.h"
@@ -1024,37 +1023,9 @@ double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Ne
     std::vector<double> residuals(static_cast<size_t>(samples), 0.0);
 #pragma omp parallel for schedule(static)
     for (Eigen::Index s = 0; s < samples; ++s) {
-        const Eigen::Index i = s * stride;
-        // The height of p over the quadric z = a x^2 + b xy + c y^2 + d x + e y + f fitted to
-        // its neighbours alone, in p's normal frame: on a smooth surface the quadric predicts
-        // p to third order, so what remains is noise, whatever the curvature.
-        const Eigen::Vector3d w = normals.row(i).transpose().normalized();
-        const Eigen::Vector3d u = w.unitOrthogonal();
-        const Eigen::Vector3d v = w.cross(u);
-        const double radius = std::sqrt(N.squaredDistances(i, N.k() - 1));
-        if (!(radius > 0.0) || !w.allFinite()) {
-            continue;
-        }
-        Eigen::Matrix<double, 6, 6> AtA = Eigen::Matrix<double, 6, 6>::Zero();
-        Eigen::Matrix<double, 6, 1> Atz = Eigen::Matrix<double, 6, 1>::Zero();
-        for (int j = 0; j < N.k(); ++j) {
-            const Eigen::Vector3d d = (P.row(N.indices(i, j)) - P.row(i)).transpose() / radius;
-            const double x = d.dot(u), y = d.dot(v), z = d.dot(w);
-            const double row[6] = {x * x, x * y, y * y, x, y, 1.0};
-            // The lower triangle, summed by hand: Eigen's rankUpdate is not inlined.
-            for (int a = 0; a < 6; ++a) {
-                Atz(a) += z * row[a];
-                for (int b = a; b < 6; ++b) {
-                    AtA(b, a) += row[b] * row[a];
-                }
-            }
-        }
-        const Eigen::LDLT<Eigen::Matrix<double, 6, 6>, Eigen::Lower> ldlt(AtA);
-        if (ldlt.info() != Eigen::Success) {
-            continue;
-        }
-        const double f = ldlt.solve(Atz)(5);
-        residuals[static_cast<size_t>(s)] = std::isfinite(f) ? std::abs(f) * radius : 0.0;
+        // The point's height over the quadric fitted to its neighbours alone: its noise.
+        const double height = quadricHeight(P, normals, N, s * stride);
+        residuals[static_cast<size_t>(s)] = std::isfinite(height) ? std::abs(height) : 0.0;
     }
     return median(std::move(residuals)) / spacing;
 }

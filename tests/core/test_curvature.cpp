@@ -151,6 +151,53 @@ TEST(Curvature, CollinearNeighboursGiveZeroNotNaN)
     EXPECT_EQ(H.cwiseAbs().maxCoeff(), 0.0);
 }
 
+TEST(Curvature, QuadricHeightIsAPointsOffsetFromItsNeighboursSurface)
+{
+    // On a sphere of radius 20 spacings the quadric through a point's neighbours passes
+    // through the point to third order; points lifted by 0.3 spacing along their outward
+    // normal sit 0.3 above it: the quadric lies 0.3 below them, whatever the curvature.
+    shapes::Sample s = shapes::sphere(20.0, 1.0, 8);
+    const Neighbourhoods N = nearestNeighbours(s.points, {16, 0});
+    const std::vector<Eigen::Index> lifted{3, 100, 777};
+    for (const Eigen::Index i : lifted) {
+        s.points.row(i) += 0.3 * s.normals.row(i);
+    }
+    // Elsewhere (away from the lifted points and the neighbourhoods they are in).
+    const auto touched = [&](Eigen::Index i) {
+        for (const Eigen::Index l : lifted) {
+            if (i == l || (N.indices.row(i).array() == static_cast<int>(l)).any()) {
+                return true;
+            }
+        }
+        return false;
+    };
+    int checked = 0;
+    for (Eigen::Index i = 0; i < s.size(); i += 7) {
+        if (!touched(i)) {
+            EXPECT_NEAR(quadricHeight(s.points, s.normals, N, i), 0.0, 0.02) << "point " << i;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 100);
+    for (const Eigen::Index i : lifted) {
+        // (A fit through the point itself too would give about 16 / 17 of it.)
+        EXPECT_NEAR(quadricHeight(s.points, s.normals, N, i), -0.3, 0.005) << "point " << i;
+        // The fit reads the normal's line, not its sign.
+        EXPECT_NEAR(quadricHeight(s.points, -s.normals, N, i), 0.3, 0.005) << "point " << i;
+    }
+    // No normal, or neighbours on a line: no height.
+    NormalMatrix none = s.normals;
+    none.row(5).setZero();
+    EXPECT_TRUE(std::isnan(quadricHeight(s.points, none, N, 5)));
+    PointMatrix line(40, 3);
+    for (int i = 0; i < 40; ++i) {
+        line.row(i) << 0.5 * i, 0.25 * i, -0.1 * i;
+    }
+    NormalMatrix up(40, 3);
+    up.rowwise() = Eigen::RowVector3d(0.0, 0.0, 1.0);
+    EXPECT_TRUE(std::isnan(quadricHeight(line, up, nearestNeighbours(line, {8, 0}), 20)));
+}
+
 TEST(Curvature, BadInputThrows)
 {
     const shapes::Sample s = shapes::plane(10.0, 1.0, 7);
