@@ -517,7 +517,10 @@ void fillRimFromInterior(RegionGeometry& g, double width)
 {
     const Eigen::Index n = g.points.rows();
     const Neighbourhoods& N = g.neighbours;
-    const std::vector<char> rim = boundaryPoints(g.points, g.normals, N);
+    // The grid's cells are a regular sampling: a 90 degree gap already marks its rim.
+    BoundaryOptions rimOptions;
+    rimOptions.minGapAngle = 90.0;
+    const std::vector<char> rim = boundaryPoints(g.points, g.normals, N, rimOptions);
     releaseIdleThreads(); // the rest is serial
     constexpr double infinity = std::numeric_limits<double>::infinity();
     // Distance from the rim along the neighbourhood graph (Dijkstra from every rim point),

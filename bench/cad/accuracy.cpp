@@ -16,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -82,6 +83,9 @@ struct Arguments
     double spacingFraction = 0.0;
     /// Noise standard deviation along the normal, as a multiple of the mean point spacing.
     double noiseSigma = 0.3;
+    /// Share of the sampled points kept, each at random: below 1 an irregular sampling (a
+    /// thinned or patchy scan) instead of the Poisson disk's even one.
+    double keep = 1.0;
     unsigned seed = 1;
     std::string writeDir;
     std::string linesDir;
@@ -101,7 +105,9 @@ const char* usage =
     "  --spacing-fraction F    Poisson-disk radius as a fraction of the part's bounding-box\n"
     "                          diagonal (overrides --points)\n"
     "  --noise-sigma S         noise along the normal, x mean spacing (default 0.3)\n"
-    "  --seed S                seed of sampling and noise (default 1)\n"
+    "  --keep F                keep each sampled point with probability F (default 1): an\n"
+    "                          irregular sampling, as of a thinned or patchy scan\n"
+    "  --seed S                seed of sampling, thinning and noise (default 1)\n"
     "  --write DIR             write DIR/<part>-<clean|noisy>/cloud.xyz and truth.json\n"
     "  --lines DIR             also score DIR/<part>-<clean|noisy>/lines.json (the lines JSON\n"
     "                          of any detector, e.g. the featurelines CLI run on cloud.xyz)\n"
@@ -109,8 +115,30 @@ const char* usage =
     "  --demo-points N         points of the demo cloud (default 40000)\n"
     "  --markdown              print tables as Markdown\n"
     "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n"
+    "  --boundary-gap DEG      the extraction's boundary gap angle (default 120)\n"
     "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
     "                          (default 8; 1: the cloud's own sampling only)\n";
+
+/// Each point of `cloud` kept with probability `share` (seeded); all of them at share 1.
+SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
+{
+    if (share >= 1.0) {
+        return cloud;
+    }
+    std::mt19937 random(seed);
+    std::bernoulli_distribution kept(share);
+    Eigen::Index rows = 0;
+    for (Eigen::Index i = 0; i < cloud.points.rows(); ++i) {
+        if (kept(random)) {
+            cloud.points.row(rows) = cloud.points.row(i);
+            cloud.normals.row(rows) = cloud.normals.row(i);
+            ++rows;
+        }
+    }
+    cloud.points.conservativeResize(rows, 3);
+    cloud.normals.conservativeResize(rows, 3);
+    return cloud;
+}
 
 double parseNumber(const std::string& text, const std::string& option)
 {
@@ -157,6 +185,8 @@ Arguments parseArguments(int argc, char** argv)
             a.spacingFraction = parseNumber(value(), opt);
         } else if (opt == "--noise-sigma") {
             a.noiseSigma = parseNumber(value(), opt);
+        } else if (opt == "--keep") {
+            a.keep = parseNumber(value(), opt);
         } else if (opt == "--seed") {
             a.seed = static_cast<unsigned>(parseNumber(value(), opt));
         } else if (opt == "--write") {
@@ -171,6 +201,8 @@ Arguments parseArguments(int argc, char** argv)
             a.markdown = true;
         } else if (opt == "--no-baselines") {
             a.baselines = false;
+        } else if (opt == "--boundary-gap") {
+            extractionOptions.sharp.boundary.minGapAngle = parseNumber(value(), opt);
         } else if (opt == "--max-scale") {
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
         } else if (opt == "--help" || opt == "-h") {
@@ -188,6 +220,9 @@ Arguments parseArguments(int argc, char** argv)
     }
     if (a.noiseSigma < 0.0) {
         throw std::invalid_argument("--noise-sigma must not be negative.");
+    }
+    if (!(a.keep > 0.0 && a.keep <= 1.0)) {
+        throw std::invalid_argument("--keep must lie in (0, 1].");
     }
     for (const std::string& s : a.shapes) {
         bool known = false;
@@ -619,7 +654,8 @@ int run(const Arguments& args)
                               : radiusForPointCount(area, args.points);
         // Seeds follow the part's place in the full list, so a subset gives the same clouds.
         sampling.seed = args.seed * 1000u + static_cast<unsigned>(shapeIndex);
-        const SampledCloud clean = sampleShape(part.shape, sampling);
+        const SampledCloud clean =
+            keptAtRandom(sampleShape(part.shape, sampling), args.keep, sampling.seed + 700u);
         const double spacing = meanNearestSpacing(clean.points);
         TruthOptions truthOptions;
         truthOptions.step = 0.5 * spacing;

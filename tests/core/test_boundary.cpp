@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include "FeatureLines/Boundary.h"
@@ -143,6 +144,46 @@ TEST(Boundary, ClosedSurfacesHaveNone)
         }
         EXPECT_EQ(flagged, 0);
         EXPECT_TRUE(r.boundary.network.lines.empty());
+    }
+}
+
+// An irregular sampling: a regular one with 30 % of its points dropped at random (a thinned or
+// patchy scan). Inside, a point's 16 nearest neighbours then leave a gap wider than 90
+// degrees often enough for the scattered points to chain into false lines; wider than 120
+// rarely, and never in chains. The border is found as on the whole sampling.
+TEST(Boundary, ThinnedSamplingGivesTheBorderOnly)
+{
+    std::mt19937 random(12);
+    std::bernoulli_distribution kept(0.7);
+    const auto thinned = [&](const PointMatrix& P) {
+        std::vector<Eigen::Index> rows;
+        for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            if (kept(random)) {
+                rows.push_back(i);
+            }
+        }
+        PointMatrix T(static_cast<Eigen::Index>(rows.size()), 3);
+        for (size_t i = 0; i < rows.size(); ++i) {
+            T.row(static_cast<Eigen::Index>(i)) = P.row(rows[i]);
+        }
+        return T;
+    };
+    const double size = 40.0, h = size / 2;
+    const PointMatrix sheet = thinned(shapes::plane(size, 1.0, 9).points);
+    const BoundaryRun r = extract(sheet);
+    ASSERT_EQ(r.boundary.network.lines.size(), 1u);
+    const Polyline& loop = r.boundary.network.lines[0];
+    EXPECT_TRUE(loop.closed);
+    for (Eigen::Index i = 0; i < loop.points.rows(); ++i) {
+        EXPECT_LT(distanceToSquareOutline(loop.points(i, 0), loop.points(i, 1), h),
+                  2.0 * r.spacing);
+    }
+    EXPECT_NEAR(loopLength(loop), 4.0 * (size - 1.0), 0.05 * 4.0 * size);
+
+    // Closed surfaces thinned alike: no line.
+    for (const shapes::Sample& closed :
+         {shapes::sphere(12.0, 1.0, 10), shapes::cube(20.0, 1.0, 11)}) {
+        EXPECT_TRUE(extract(thinned(closed.points)).boundary.network.lines.empty());
     }
 }
 
