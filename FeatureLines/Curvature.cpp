@@ -148,6 +148,20 @@ template <class T> struct Sums
     }
 };
 
+/// The sums of point i's fit over its first k neighbours, in frame f.
+Sums<double> sumsOf(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i, int k,
+                    const Frame& f)
+{
+    Sums<double> sums;
+    const double* o = P.row(i).data();
+    const int* neighbours = N.indices.row(i).data();
+    for (int j = 0; j < k; ++j) {
+        const double* p = P.row(neighbours[j]).data();
+        sums.add(p[0] - o[0], p[1] - o[1], p[2] - o[2], f.u, f.v, f.w);
+    }
+    return sums;
+}
+
 /// Two doubles in one SSE register where the processor has one (GCC and Clang vectors).
 typedef double DoublePair __attribute__((vector_size(16)));
 
@@ -217,13 +231,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
             H(i) = 0.0;
             return;
         }
-        Sums<double> sums;
-        const double* o = P.row(i).data();
-        const int* neighbours = N.indices.row(i).data();
-        for (int j = 0; j < k; ++j) {
-            const double* p = P.row(neighbours[j]).data();
-            sums.add(p[0] - o[0], p[1] - o[1], p[2] - o[2], f.u, f.v, f.w);
-        }
+        const Sums<double> sums = sumsOf(P, N, i, k, f);
         H(i) = curvatureFromSums(sums.s, sums.r, k, f.scale, options.signedCurvature);
     };
     const Eigen::Index pairs = n / 2;
@@ -280,13 +288,7 @@ double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Ne
     if (!f.valid || k < minimumNeighbours) {
         return std::numeric_limits<double>::quiet_NaN();
     }
-    Sums<double> sums;
-    const double* o = P.row(i).data();
-    const int* neighbours = N.indices.row(i).data();
-    for (int j = 0; j < k; ++j) {
-        const double* p = P.row(neighbours[j]).data();
-        sums.add(p[0] - o[0], p[1] - o[1], p[2] - o[2], f.u, f.v, f.w);
-    }
+    const Sums<double> sums = sumsOf(P, N, i, k, f);
     double c[6];
     if (!solveQuadric(sums.s, sums.r, k, c)) {
         return std::numeric_limits<double>::quiet_NaN();
