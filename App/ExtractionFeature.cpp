@@ -145,6 +145,7 @@ Extraction::Extraction()
     initParameter(NoiseThreshold, "NoiseThreshold");
     initParameter(SignedCurvature, "SignedCurvature");
     initParameter(MaxCurvatureScale, "MaxCurvatureScale");
+    initParameter(PlaceCoarseLines, "PlaceCoarseLines");
     initParameter(NodeRadius, "NodeRadius");
     initParameter(ExtendedRadius, "ExtendedRadius");
     initParameter(MaxEdgeLength, "MaxEdgeLength");

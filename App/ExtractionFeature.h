@@ -54,6 +54,7 @@ public:
     App::PropertyFloatConstraint NoiseThreshold;
     App::PropertyBool SignedCurvature;
     App::PropertyFloatConstraint MaxCurvatureScale;
+    App::PropertyBool PlaceCoarseLines;
     // Line graph
     App::PropertyFloatConstraint NodeRadius;
     App::PropertyFloatConstraint ExtendedRadius;

@@ -143,6 +143,13 @@ std::vector<Parameter> makeParameters()
          PK::Spacing, PS::Regions, 1, 64, 1, nullptr,
          [](const ExtractionOptions& o) { return o.smooth.scales.maxScale; },
          [](ExtractionOptions& o, double v) { o.smooth.scales.maxScale = v; }},
+        {"PlaceCoarseLines", "Smooth edges",
+         "Where a region's curvature was read at a coarser scale, move its smooth lines onto the "
+         "curvature step of the points under them (a fit of the surface's profile across each "
+         "line): the coarse scale alone leaves them a few point spacings off the fillet border.",
+         PK::Switch, PS::Lines, 0, 1, 1, nullptr,
+         [](const ExtractionOptions& o) { return o.smooth.placeCoarseLines ? 1.0 : 0.0; },
+         [](ExtractionOptions& o, double v) { o.smooth.placeCoarseLines = v != 0.0; }},
 
         // Line graph (Demarsin et al. 2007, reused for smooth edges in Sec. 3)
         {"NodeRadius", "Line graph",

@@ -1257,6 +1257,10 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));
         dropLines(level.network, anchored, weak);
     }
+    if (options.placeCoarseLines && region.curvatureScale > 1.0) {
+        placeOnCurvatureSteps(level.network, region.points, region.normals, region.spacing,
+                              region.curvatureScale * region.spacing, threshold, options.placement);
+    }
     anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
                               options.anchorAngle);
     const double minOpen = options.graph.minOpenComponentLength * region.spacing;

@@ -13,6 +13,7 @@
 #include "FeatureLines/Curvature.h"
 #include "FeatureLines/CurvatureScale.h"
 #include "FeatureLines/HistogramThreshold.h"
+#include "FeatureLines/LinePlacement.h"
 #include "FeatureLines/PointLabels.h"
 #include "FeatureLines/RingNeighbourhood.h"
 #include "FeatureLines/Smoothing.h"
@@ -182,6 +183,13 @@ struct SmoothEdgeOptions
     /// near an end, so anything ahead counts.
     double anchorAngle = 90.0;
     AutomaticThresholdOptions automatic;
+    /// Where the region's curvature was read at a coarser scale (RegionGeometry::
+    /// curvatureScale > 1), the lines follow that scale's field, a few of the region's
+    /// spacings off the border in places: they are moved onto the curvature step of the
+    /// region's points under them (LinePlacement.h, beyond the paper). At the region's own
+    /// scale the lines already lie within a spacing of the border and stay as they are.
+    bool placeCoarseLines = true;
+    LinePlacementOptions placement;
     /// The scale of the curvature (CurvatureScaleOptions, RegionGeometry::curvatureScale).
     CurvatureScaleOptions scales;
     /// Seed of the random choice of growing seeds (Sec. 3).

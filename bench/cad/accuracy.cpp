@@ -117,7 +117,9 @@ const char* usage =
     "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n"
     "  --boundary-gap DEG      the extraction's boundary gap angle (default 120)\n"
     "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
-    "                          (default 8; 1: the cloud's own sampling only)\n";
+    "                          (default 8; 1: the cloud's own sampling only)\n"
+    "  --no-line-placement     leave the lines of coarse-scale regions where the coarse\n"
+    "                          curvature put them (no fit of the curvature step)\n";
 
 /// Each point of `cloud` kept with probability `share` (seeded); all of them at share 1.
 SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
@@ -205,6 +207,8 @@ Arguments parseArguments(int argc, char** argv)
             extractionOptions.sharp.boundary.minGapAngle = parseNumber(value(), opt);
         } else if (opt == "--max-scale") {
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
+        } else if (opt == "--no-line-placement") {
+            extractionOptions.smooth.placeCoarseLines = false;
         } else if (opt == "--help" || opt == "-h") {
             std::cout << usage;
             std::exit(0);
