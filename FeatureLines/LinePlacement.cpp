@@ -376,9 +376,19 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
         }
         const double length = arc[static_cast<size_t>(m)];
         PointMatrix placed = line.points;
+        // An open line's ends sit on junctions or anchors and stay: the displacement tapers to
+        // none over one stride from each end, so the line keeps its direction there. (Its
+        // first and last inner vertices are fitted, so every inner vertex lies between two.)
         const auto move = [&](Eigen::Index i, const Eigen::RowVector3d& d) {
-            if (d.squaredNorm() > 0.0) {
-                placed.row(i) += d;
+            double taper = 1.0;
+            if (!line.closed && stride > 0.0) {
+                const double fromEnd =
+                    std::min(arc[static_cast<size_t>(i)],
+                             arc[static_cast<size_t>(m - 1)] - arc[static_cast<size_t>(i)]);
+                taper = std::min(1.0, fromEnd / stride);
+            }
+            if (taper * d.squaredNorm() > 0.0) {
+                placed.row(i) += taper * d;
                 ++moved;
             }
         };
@@ -414,15 +424,6 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
         }
         if (count == 1 && placedFit[first]) {
             move(fitted[first].second, displacement[first]);
-        }
-        // An open line's inner vertices before its first and after its last fitted vertex.
-        if (!line.closed) {
-            for (Eigen::Index i = 1; i < fitted[first].second; ++i) {
-                move(i, placedFit[first] ? displacement[first] : Eigen::RowVector3d::Zero());
-            }
-            for (Eigen::Index i = fitted[last - 1].second + 1; i + 1 < m; ++i) {
-                move(i, placedFit[last - 1] ? displacement[last - 1] : Eigen::RowVector3d::Zero());
-            }
         }
         line.points = std::move(placed);
         first = last;

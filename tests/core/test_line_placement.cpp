@@ -92,8 +92,15 @@ TEST(LinePlacement, VerticesComeOntoTheFilletBorder)
             const PointMatrix& V = network.lines[0].points;
             EXPECT_GT(moved, V.rows() / 2) << "sigma " << sigma << " offset " << offset;
             for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
-                EXPECT_NEAR(V(i, 0), 0.0, h)
-                    << "vertex " << i << " sigma " << sigma << " offset " << offset;
+                // Within a stride (half the strip's length, 3 fit spacings: 12) of an end the
+                // move tapers off: such vertices lie between their old place and the border.
+                if (std::abs(V(i, 1)) <= 30.0 - 12.0) {
+                    EXPECT_NEAR(V(i, 0), 0.0, h)
+                        << "vertex " << i << " sigma " << sigma << " offset " << offset;
+                } else {
+                    EXPECT_LE(std::abs(V(i, 0)), std::abs(offset) + h) << "vertex " << i;
+                    EXPECT_LT(std::abs(V(i, 0)), std::abs(offset)) << "vertex " << i;
+                }
                 EXPECT_DOUBLE_EQ(V(i, 1), before(i, 1)) << "moved across the line only";
             }
             EXPECT_TRUE(V.row(0) == before.row(0));
@@ -117,6 +124,9 @@ TEST(LinePlacement, TheFarBorderIsFoundToo)
     placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0);
     const PointMatrix& V = network.lines[0].points;
     for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
+        if (std::abs(V(i, 1)) > 30.0 - 12.0) {
+            continue; // the taper at the ends
+        }
         const Eigen::RowVector2d xz(V(i, 0), V(i, 2));
         EXPECT_LT((xz - Eigen::RowVector2d(border.x(), border.z())).norm(), h) << "vertex " << i;
     }
