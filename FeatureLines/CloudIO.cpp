@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "FeatureLines/HugePages.h"
+
 namespace featurelines {
 
 namespace detail {
@@ -62,6 +64,7 @@ PointMatrix readText(const std::string& path)
 
     std::vector<double> xyz;
     xyz.reserve(text.size() / 16);
+    adviseHugePages(xyz.data(), xyz.capacity() * sizeof(double));
     const char* cursor = text.data();
     const char* const end = text.data() + text.size();
     if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) { // UTF-8 byte order mark

@@ -14,6 +14,7 @@
 
 #include "FeatureLines/CloudIO.h"
 #include "FeatureLines/DisjointSets.h"
+#include "FeatureLines/HugePages.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
 #include "FeatureLines/Normals.h"
@@ -61,7 +62,7 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
 {
     const Eigen::Index n = P.rows();
     const MortonGrid grid(P);
-    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
+    auto keyed = hugePageVector<std::pair<std::uint64_t, int>>(static_cast<size_t>(n));
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index i = 0; i < n; ++i) {
         keyed[static_cast<size_t>(i)] = {grid.key(P, i), static_cast<int>(i)};
@@ -88,6 +89,7 @@ PointMatrix orderedDistinctPoints(const PointMatrix& P, std::vector<int>& inputT
         inputToPoint[static_cast<size_t>(i)] = static_cast<int>(firstOf.size()) - 1;
     }
     PointMatrix distinct(static_cast<Eigen::Index>(firstOf.size()), 3);
+    adviseHugePagesOf(distinct);
 #pragma omp parallel for schedule(static, 4096)
     for (Eigen::Index r = 0; r < distinct.rows(); ++r) {
         distinct.row(r) = P.row(firstOf[static_cast<size_t>(r)]);

@@ -5,6 +5,8 @@
 
 #include <omp.h>
 
+#include "FeatureLines/HugePages.h"
+
 namespace featurelines {
 
 MortonGrid::MortonGrid(const PointMatrix& P)
@@ -27,7 +29,7 @@ void sortByMortonKey(std::vector<std::pair<std::uint64_t, int>>& keyed)
     const int runs = n < (std::size_t(1) << 16) ? 1 : std::max(1, omp_get_max_threads());
     const auto runStart = [&](int r) { return n * static_cast<std::size_t>(r) / runs; };
     std::vector<std::size_t> start(static_cast<std::size_t>(runs) * buckets);
-    std::vector<std::pair<std::uint64_t, int>> other(n);
+    auto other = hugePageVector<std::pair<std::uint64_t, int>>(n);
     for (int p = 0; p < passes && n > 0; ++p) {
         const auto digit = [&](const std::pair<std::uint64_t, int>& item) {
             return static_cast<std::size_t>((item.first >> (bits * p)) & (buckets - 1));

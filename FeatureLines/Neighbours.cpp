@@ -12,6 +12,7 @@
 #include <omp.h>
 
 #include "FeatureLines/CloudIO.h"
+#include "FeatureLines/HugePages.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/MortonOrder.h"
 
@@ -152,6 +153,14 @@ constexpr double radiusGuess = 1.1;
 
 } // namespace
 
+void Neighbourhoods::allocate(Eigen::Index rows, int k)
+{
+    indices.resize(rows, k);
+    squaredDistances.resize(rows, k);
+    adviseHugePagesOf(indices);
+    adviseHugePagesOf(squaredDistances);
+}
+
 Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options)
 {
     const int k = options.k;
@@ -173,8 +182,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     const Eigen::Index n = P.rows();
     const int threads = threadCount(options.threads);
     Neighbourhoods result;
-    result.indices.resize(n, k);
-    result.squaredDistances.resize(n, k);
+    result.allocate(n, k);
     const MortonGrid grid(P);
     if (!(grid.scale > 0.0)) {
         // Every point coincides: the neighbours of each are the others of lowest index.

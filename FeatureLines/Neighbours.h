@@ -24,6 +24,9 @@ struct Neighbourhoods
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> squaredDistances;
 
     int k() const { return static_cast<int>(indices.cols()); }
+    /// Sizes both arrays for `rows` points of k neighbours each, uninitialised, on huge pages
+    /// where the system gives them (HugePages.h).
+    void allocate(Eigen::Index rows, int k);
     Eigen::Index size() const { return indices.rows(); }
 };
 

@@ -8,6 +8,8 @@
 #include <Eigen/Eigenvalues>
 #include <omp.h>
 
+#include "FeatureLines/HugePages.h"
+
 namespace featurelines {
 
 namespace {
@@ -103,6 +105,7 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
     NormalEstimate result;
     result.normals.resize(n, 3);
     result.variation.resize(n);
+    adviseHugePagesOf(result.normals);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
         fitNormal(P, N, i, k, result.normals, &result.variation);

@@ -17,6 +17,7 @@
 
 #include "FeatureLines/Boundary.h"
 #include "FeatureLines/DisjointSets.h"
+#include "FeatureLines/HugePages.h"
 #include "FeatureLines/IdleThreads.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
@@ -1100,6 +1101,7 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
     g.neighbours = regionNeighbourhoods(N, region, members, regionId);
     const Eigen::Index m = static_cast<Eigen::Index>(members.size());
     g.points.resize(m, 3);
+    adviseHugePagesOf(g.points);
     for (Eigen::Index i = 0; i < m; ++i) {
         g.points.row(i) = P.row(members[static_cast<size_t>(i)]);
     }

@@ -319,8 +319,7 @@ Neighbourhoods regionNeighbourhoods(const Neighbourhoods& N, const std::vector<i
 
     const int k = N.k();
     Neighbourhoods sub;
-    sub.indices.resize(static_cast<Eigen::Index>(members.size()), k);
-    sub.squaredDistances.resize(static_cast<Eigen::Index>(members.size()), k);
+    sub.allocate(static_cast<Eigen::Index>(members.size()), k);
     bool isolated = false; // a member with no neighbour in the region
     bool unlisted = false; // a neighbour labelled regionId but not among the members
 #pragma omp parallel for schedule(static, 4096) reduction(|| : isolated, unlisted)

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "FeatureLines/HugePages.h"
+
 namespace featurelines {
 
 namespace {
@@ -126,8 +128,10 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
     }
     const int* umbrella = everyRow ? N.indices.data() : members.data();
 
-    PointMatrix current = P;
-    PointMatrix moved(m, 3);
+    PointMatrix current(n, 3), moved(m, 3);
+    adviseHugePagesOf(current);
+    adviseHugePagesOf(moved);
+    current = P;
     // One umbrella step for every subset point from the same positions (Jacobi), so the
     // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
     auto step = [&](double factor) {
