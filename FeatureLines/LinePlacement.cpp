@@ -87,6 +87,16 @@ struct StripPoint
     double u, a, z;
 };
 
+/// What curvatureStep found across a strip.
+struct StepFit
+{
+    /// The border's position across the strip (fit spacings), NaN when none was found.
+    double u = std::numeric_limits<double>::quiet_NaN();
+    /// The best position lay on the edge of the range searched, on the side of `edge` (-1 or
+    /// +1; 0 when it did not): the border may lie beyond it.
+    int edge = 0;
+};
+
 /// The border across a strip: the position u0 (fit spacings) at which the model
 ///   z = c0 + c1 u + c2 a^2 + c3 [u > u0] (u - u0)^2     (or [u < u0] (u0 - u)^2)
 /// fits best. The first three terms are the surface on the straight side (a plane across the
@@ -96,16 +106,17 @@ struct StripPoint
 /// nearly unplaceable: on a strip, a quadric plus a one-sided parabola reproduces a hinge
 /// moved by several of its widths to within a few percent. Returns NaN unless the best
 /// position beats the straight side alone (c3 = 0: no step) by minEvidence residual
-/// variances, or when it lies on the edge of [-maxShift, maxShift]: one curvature across the
-/// whole strip (a cylinder across, a sphere) is fitted best by a hinge at the strip's edge.
-double curvatureStep(std::vector<StripPoint>& s, double maxShift, double step,
-                     const LinePlacementOptions& options)
+/// variances, or when it lies on the edge of [-maxShift, maxShift] (then `edge` says which):
+/// one curvature across the whole strip (a cylinder across, a sphere) is fitted best by a
+/// hinge at the strip's edge, and so is a border beyond the range.
+StepFit curvatureStep(std::vector<StripPoint>& s, double maxShift, double step,
+                      const LinePlacementOptions& options)
 {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
+    StepFit none;
     const size_t n = s.size();
     const size_t minSide = static_cast<size_t>(std::max(options.minPointsPerSide, 1));
     if (n < std::max<size_t>(2 * minSide, 8)) {
-        return nan;
+        return none;
     }
     std::sort(s.begin(), s.end(),
               [](const StripPoint& x, const StripPoint& y) { return x.u < y.u; });
@@ -147,11 +158,11 @@ double curvatureStep(std::vector<StripPoint>& s, double maxShift, double step,
     const double straight = residual(Eigen::LDLT<Eigen::Matrix3d>(M.topLeftCorner<3, 3>()),
                                      Eigen::Vector3d(r.head<3>()));
     if (!std::isfinite(straight)) {
-        return nan;
+        return none;
     }
 
     double bestSse = std::numeric_limits<double>::infinity();
-    double bestU = nan;
+    double bestU = std::numeric_limits<double>::quiet_NaN();
     size_t j0 = 0;
     const int positions = static_cast<int>(std::floor(maxShift / step));
     for (int k = -positions; k <= positions; ++k) {
@@ -185,14 +196,20 @@ double curvatureStep(std::vector<StripPoint>& s, double maxShift, double step,
             }
         }
     }
-    if (!std::isfinite(bestU) || std::abs(bestU) > (positions - 0.5) * step) {
-        return nan;
+    if (!std::isfinite(bestU)) {
+        return none;
+    }
+    if (std::abs(bestU) > (positions - 0.5) * step) {
+        none.edge = bestU > 0.0 ? 1 : -1;
+        return none;
     }
     const double variance = std::max(bestSse, 0.0) / static_cast<double>(n - 4);
     if (!(variance > 0.0) || !(straight - bestSse >= options.minEvidence * variance)) {
-        return nan;
+        return none;
     }
-    return bestU;
+    StepFit found;
+    found.u = bestU;
+    return found;
 }
 
 double median(std::vector<double>& v)
@@ -224,7 +241,7 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
     }
     if (!(options.halfWidth > 0.0) || !(options.halfLength > 0.0) || !(options.maxShift > 0.0) ||
         !(options.step > 0.0) || !(options.minEvidence >= 0.0) || !(options.radiusShare >= 0.0) ||
-        options.minPointsPerSide < 1 || options.medianHalfWindow < 0 ||
+        options.minPointsPerSide < 1 || options.medianHalfWindow < 0 || options.recentres < 0 ||
         !(options.fitStride >= 0.0) ||
         !std::isfinite(options.halfWidth + options.halfLength + options.maxShift + options.step)) {
         throw std::invalid_argument("line placement: the strip's half width and length, the "
@@ -281,41 +298,66 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
             const Eigen::Index m = V.rows(), i = fitted[t].second;
             const Eigen::RowVector3d v = V.row(i);
             const Eigen::RowVector3d tangent = V.row((i + 1) % m) - V.row((i + m - 1) % m);
-            near.clear();
-            index.near(v, near);
-            // The surface normal at the vertex: the points within a fit spacing, their
-            // normals turned alike.
-            Eigen::RowVector3d normal = Eigen::RowVector3d::Zero();
-            int reference = -1;
-            for (int p : near) {
-                if ((P.row(p) - v).squaredNorm() <= fitSpacing * fitSpacing) {
-                    if (reference < 0) {
-                        reference = p;
+            // The strip's frame at `centre`: the surface normal from the points within a fit
+            // spacing (their normals turned alike), the line's direction in the tangent plane,
+            // and across it. False where the points do not give one.
+            Eigen::RowVector3d n, a, c;
+            const auto frameAt = [&](const Eigen::RowVector3d& centre) {
+                near.clear();
+                index.near(centre, near);
+                Eigen::RowVector3d normal = Eigen::RowVector3d::Zero();
+                int reference = -1;
+                for (int p : near) {
+                    if ((P.row(p) - centre).squaredNorm() <= fitSpacing * fitSpacing) {
+                        if (reference < 0) {
+                            reference = p;
+                        }
+                        const double sign = N.row(p).dot(N.row(reference)) < 0.0 ? -1.0 : 1.0;
+                        normal += sign * N.row(p);
                     }
-                    const double sign = N.row(p).dot(N.row(reference)) < 0.0 ? -1.0 : 1.0;
-                    normal += sign * N.row(p);
                 }
-            }
-            if (!(normal.norm() > 0.0)) {
-                continue;
-            }
-            const Eigen::RowVector3d n = normal.normalized();
-            const Eigen::RowVector3d along = tangent - tangent.dot(n) * n;
-            if (!(along.norm() > 0.0)) {
-                continue;
-            }
-            const Eigen::RowVector3d a = along.normalized();
-            const Eigen::RowVector3d c = n.cross(a);
-            strip.clear();
-            for (int p : near) {
-                const Eigen::RowVector3d d = (P.row(p) - v) / fitSpacing;
-                const StripPoint sp{d.dot(c), d.dot(a), d.dot(n)};
-                if (std::abs(sp.u) <= W && std::abs(sp.a) <= L && std::abs(sp.z) <= W) {
-                    strip.push_back(sp);
+                if (!(normal.norm() > 0.0)) {
+                    return false;
                 }
+                n = normal.normalized();
+                const Eigen::RowVector3d along = tangent - tangent.dot(n) * n;
+                if (!(along.norm() > 0.0)) {
+                    return false;
+                }
+                a = along.normalized();
+                // Across keeps the side of the first frame's: a re-centred strip continues
+                // the search in the same direction.
+                const Eigen::RowVector3d cross = n.cross(a);
+                c = across[t].norm() > 0.0 && cross.dot(across[t]) < 0.0 ? -cross : cross;
+                return true;
+            };
+            Eigen::RowVector3d centre = v;
+            for (int attempt = 0; attempt <= options.recentres; ++attempt) {
+                if (!frameAt(centre)) {
+                    break;
+                }
+                if (attempt == 0) {
+                    across[t] = c;
+                }
+                strip.clear();
+                for (int p : near) {
+                    const Eigen::RowVector3d d = (P.row(p) - centre) / fitSpacing;
+                    const StripPoint sp{d.dot(c), d.dot(a), d.dot(n)};
+                    if (std::abs(sp.u) <= W && std::abs(sp.a) <= L && std::abs(sp.z) <= W) {
+                        strip.push_back(sp);
+                    }
+                }
+                const StepFit fit = curvatureStep(strip, options.maxShift * W, step, options);
+                if (std::isfinite(fit.u)) {
+                    shift[t] = (centre + fit.u * fitSpacing * c - v).dot(across[t]) / fitSpacing;
+                    break;
+                }
+                if (fit.edge == 0) {
+                    break;
+                }
+                // The border lies beyond the range: the next strip is centred on its edge.
+                centre += fit.edge * options.maxShift * W * fitSpacing * c;
             }
-            shift[t] = curvatureStep(strip, options.maxShift * W, step, options);
-            across[t] = c;
         }
     }
 

@@ -36,8 +36,14 @@ struct LinePlacementOptions
     /// The farthest a vertex moves across its line, x the strip's half width: the border
     /// then keeps at least half the strip on its far side. The coarse field can leave a line
     /// several fit spacings off (a shoulder of its level reaching into the face); a border
-    /// found farther off lies outside what the strip can place: the vertex keeps its place.
+    /// found farther off lies outside what one strip can place (see recentres).
     double maxShift = 0.5;
+    /// Where the best border lies on the edge of that range (the coarse field left the line
+    /// farther off), the strip is centred on the edge and fitted again, at most this many
+    /// times: a vertex can move up to (1 + recentres) x maxShift x the half width. A surface of
+    /// one curvature across (a cylinder across, a sphere) keeps putting the border on the edge
+    /// and its vertex stays where it was. 0: one strip only.
+    int recentres = 2;
     /// x the region's own spacing: the step of the border positions tried.
     double step = 0.25;
     /// How much better the tangent-continuous pair of a straight side and a parabola must fit

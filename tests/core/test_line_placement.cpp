@@ -162,19 +162,48 @@ TEST(LinePlacement, NoStepNoMove)
     EXPECT_EQ(placeOnCurvatureSteps(onSphere, sphere.points, sphere.normals, h, 4 * h, 0.0), 0);
 }
 
-// A border farther off than the largest shift is not reached for: the vertices stay.
+// A line 6 spacings off a border, found at a scale of 4: one strip (half width 12, shifts up to
+// 4) puts the border on the edge of its range; centred there, the next strip finds it, and the
+// inner vertices come onto it (within a spacing, the end tapers aside).
+TEST(LinePlacement, ABorderBeyondOneStripIsFoundFromItsEdge)
+{
+    const double h = 1.0, scale = 4.0;
+    for (double sigma : {0.0, 0.3}) {
+        const shapes::Sample s = filletedStep(40.0, 60.0, h, sigma, 3);
+        for (double offset : {-6.0, 6.0}) {
+            LinePlacementOptions options;
+            options.maxShift = 1.0 / 3.0; // 4 spacings of a strip 12 wide
+            LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
+            placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0, options);
+            const PointMatrix& V = network.lines[0].points;
+            for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
+                // A stride is half the strip's length: 6.
+                if (std::abs(V(i, 1)) <= 20.0 - 6.0) {
+                    EXPECT_NEAR(V(i, 0), 0.0, h)
+                        << "vertex " << i << " sigma " << sigma << " offset " << offset;
+                } else {
+                    EXPECT_LT(std::abs(V(i, 0)), std::abs(offset)) << "vertex " << i;
+                }
+            }
+        }
+    }
+}
+
+// Beyond what the strips reach (one strip: 4 spacings; three: 12), the vertices stay.
 TEST(LinePlacement, ABorderBeyondTheLargestShiftIsLeftAlone)
 {
     const double h = 1.0, scale = 4.0;
     const shapes::Sample s = filletedStep(40.0, 60.0, h, 0.0, 3);
-    LinePlacementOptions options;
-    options.maxShift = 1.0 / 3.0; // 4 spacings of a strip 12 wide
-    LineNetwork network = networkOf(lineAlongY(-6.0, 0.0, 20.0, 1.5));
-    const PointMatrix before = network.lines[0].points;
-    placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0, options);
-    for (Eigen::Index i = 0; i < before.rows(); ++i) {
-        EXPECT_LE(std::abs(network.lines[0].points(i, 0) - before(i, 0)), 4.0 * h);
-        EXPECT_GT(std::abs(network.lines[0].points(i, 0)), 1.5 * h) << "vertex " << i;
+    for (const auto& [recentres, offset] : {std::pair{0, -6.0}, std::pair{2, -16.0}}) {
+        LinePlacementOptions options;
+        options.maxShift = 1.0 / 3.0;
+        options.recentres = recentres;
+        LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
+        const PointMatrix before = network.lines[0].points;
+        EXPECT_EQ(placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0, options),
+                  0)
+            << recentres << " re-centred strips, the border " << -offset << " off";
+        EXPECT_TRUE(network.lines[0].points == before);
     }
 }
 
@@ -196,7 +225,8 @@ TEST(LinePlacement, BadInputIsRefused)
                      +[](LinePlacementOptions& o) { o.step = 0; },
                      +[](LinePlacementOptions& o) { o.minEvidence = -1; },
                      +[](LinePlacementOptions& o) { o.minPointsPerSide = 0; },
-                     +[](LinePlacementOptions& o) { o.medianHalfWindow = -1; }}) {
+                     +[](LinePlacementOptions& o) { o.medianHalfWindow = -1; },
+                     +[](LinePlacementOptions& o) { o.recentres = -1; }}) {
         LinePlacementOptions o;
         set(o);
         EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, 1.0, 4.0, 0.0, o),
