@@ -254,43 +254,35 @@ Eigen::VectorXd withoutNoiseIslands(const Eigen::VectorXd& curvature, double tau
     return result;
 }
 
-/// The median, over `points`, of the local contrast across threshold tau: among the points
+/// The local contrast across threshold tau at point p of the geometry g: among the points
 /// within two fit radii (two hops of the neighbourhoods), the median curvature of those above
-/// tau minus that of those at or below it. Points with neighbours on one side only count not.
-double medianLocalContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, double tau,
-                           const std::vector<int>& points)
+/// tau minus that of those at or below it; NaN when they lie on one side only.
+double localContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, double tau, int p)
 {
     const Neighbourhoods& N = g.neighbours;
-    std::vector<double> contrasts(points.size(), std::numeric_limits<double>::quiet_NaN());
-#pragma omp parallel for schedule(dynamic, 16)
-    for (long s = 0; s < static_cast<long>(points.size()); ++s) {
-        const int p = points[static_cast<size_t>(s)];
-        const double reach2 = 4.0 * N.squaredDistances(p, N.k() - 1);
-        std::vector<int> near{p};
-        for (int j = 0; j < N.k(); ++j) {
-            const int q = N.indices(p, j);
-            near.push_back(q);
-            for (int l = 0; l < N.k(); ++l) {
-                near.push_back(N.indices(q, l));
-            }
-        }
-        std::sort(near.begin(), near.end());
-        near.erase(std::unique(near.begin(), near.end()), near.end());
-        std::vector<double> high, low;
-        for (int q : near) {
-            if ((g.points.row(q) - g.points.row(p)).squaredNorm() <= reach2) {
-                (curvature[q] > tau ? high : low).push_back(curvature[q]);
-            }
-        }
-        if (!high.empty() && !low.empty()) {
-            contrasts[static_cast<size_t>(s)] = median(std::move(high)) - median(std::move(low));
+    const double reach2 = 4.0 * N.squaredDistances(p, N.k() - 1);
+    std::vector<int> near{p};
+    for (int j = 0; j < N.k(); ++j) {
+        const int q = N.indices(p, j);
+        near.push_back(q);
+        for (int l = 0; l < N.k(); ++l) {
+            near.push_back(N.indices(q, l));
         }
     }
-    contrasts.erase(
-        std::remove_if(contrasts.begin(), contrasts.end(), [](double c) { return std::isnan(c); }),
-        contrasts.end());
-    return contrasts.empty() ? 0.0 : median(std::move(contrasts));
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    std::vector<double> high, low;
+    for (int q : near) {
+        if ((g.points.row(q) - g.points.row(p)).squaredNorm() <= reach2) {
+            (curvature[q] > tau ? high : low).push_back(curvature[q]);
+        }
+    }
+    if (high.empty() || low.empty()) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return median(std::move(high)) - median(std::move(low));
 }
+
 
 /// The largest patches of the curvature levels (low, tau] and (tau, high]: points with values
 /// in the level whose whole 1-ring is in it too (the inner points of Sec. 3 for that level),
@@ -692,6 +684,7 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     g.curvature = valuesAtPoints(raw, chosenGrid, chosen->neighbours, chosen->curvature,
                                  so.carryWidth * chosen->spacing);
     g.coarse = std::move(chosen);
+    g.coarseRowOf = std::move(chosenGrid.cellOf);
 }
 
 /// Direction of a line at one end (pointing out of the line), from the end vertex and the
@@ -1172,6 +1165,33 @@ ThresholdResult regionHigherThreshold(const RegionGeometry& region, double thres
     return findHigherThreshold(valuesOf(region, {}), threshold, histogramOptions(region, options));
 }
 
+double lineContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, double tau,
+                    const std::vector<int>& points)
+{
+    const bool coarse = g.coarse && g.coarseRowOf.size() == static_cast<size_t>(g.points.rows());
+    std::vector<int> at;
+    if (coarse) {
+        for (int p : points) {
+            at.push_back(g.coarseRowOf[static_cast<size_t>(p)]);
+        }
+        std::sort(at.begin(), at.end());
+        at.erase(std::unique(at.begin(), at.end()), at.end());
+    }
+    const std::vector<int>& where = coarse ? at : points;
+    std::vector<double> contrasts(where.size(), std::numeric_limits<double>::quiet_NaN());
+#pragma omp parallel for schedule(dynamic, 16)
+    for (long s = 0; s < static_cast<long>(where.size()); ++s) {
+        const int p = where[static_cast<size_t>(s)];
+        contrasts[static_cast<size_t>(s)] =
+            coarse ? localContrast(*g.coarse, g.coarse->curvature, tau, p)
+                   : localContrast(g, curvature, tau, p);
+    }
+    contrasts.erase(
+        std::remove_if(contrasts.begin(), contrasts.end(), [](double c) { return std::isnan(c); }),
+        contrasts.end());
+    return contrasts.empty() ? 0.0 : median(std::move(contrasts));
+}
+
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options,
                                        const std::vector<int>& subset,
@@ -1253,7 +1273,7 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                     linePoints.insert(linePoints.end(), ps.begin(), ps.end());
                 }
             }
-            const double contrast = medianLocalContrast(region, curvature, threshold, linePoints);
+            const double contrast = lineContrast(region, curvature, threshold, linePoints);
             weak[l] = contrast < options.minLineContrast * region.curvatureNoise;
         }
         level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));

@@ -158,7 +158,8 @@ struct SmoothEdgeOptions
     /// its points) exceeds its low side by less than this is dropped before the line ends are
     /// processed. A level difference of minSeparation (4) floors, blurred over about two fit
     /// radii, leaves about half of it across the line; the edge of a noise island, or a
-    /// curvature that only drifts through tau, leaves about one floor.
+    /// curvature that only drifts through tau, leaves about one floor. Two fit radii of the
+    /// scale the curvature was read at (lineContrast).
     double minLineContrast = 2.0;
     /// Sec. 3: "small clusters" are the clusters of at most this many points (the single
     /// points met at a label change).
@@ -225,6 +226,9 @@ struct RegionGeometry
     /// patches and reaches are in its own sampling); the curvature above is its curvature
     /// carried back to the region's points, on which the lines are drawn. Null at scale 1.
     std::shared_ptr<const RegionGeometry> coarse;
+    /// At a coarser scale: per point of the region, its row in `coarse` (the centroid of the
+    /// cell it was averaged into). Empty at scale 1.
+    std::vector<int> coarseRowOf;
     /// Every scale weighed for the region: its spacing (x the region's), its number of points
     /// and the thresholds the automatic rule accepts there; -1 at the region's own scale when
     /// no coarser one accepted any (it was not weighed: it keeps the region whatever it finds).
@@ -291,6 +295,17 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                                        const SmoothEdgeOptions& options = {},
                                        const std::vector<int>& subset = {},
                                        const std::vector<Polyline>& anchors = {});
+
+/// The contrast across a line at threshold tau that smoothEdgesAtThreshold asks of it
+/// (minLineContrast, in noise floors): the median over the line's `points` (region point
+/// indices) of the local contrast, the median curvature above tau minus that at or below it
+/// among the points within two fit radii (two hops of the neighbourhoods); points with values
+/// on one side only count not, and 0 when none is left. Where the region's curvature was read
+/// at a coarser scale (RegionGeometry::coarse) it is taken there, at the cells the points were
+/// averaged into: the carried-back values cross tau over the coarse fit's width, of which two
+/// fit radii of the region's own sampling see only part.
+double lineContrast(const RegionGeometry& region, const Eigen::VectorXd& curvature, double tau,
+                    const std::vector<int>& points);
 
 /// Sec. 1.2: the smooth edges of a region end on the sharp edges (or the boundary) around it,
 /// but the region stops a band short of them. Every free end (no junction) of an open line

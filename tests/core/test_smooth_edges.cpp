@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <random>
 
+#include "FeatureLines/CurvatureScale.h"
 #include "FeatureLines/Neighbours.h"
 #include "FeatureLines/Normals.h"
 #include "FeatureLines/SmoothEdges.h"
@@ -319,4 +321,52 @@ TEST(SmoothEdges, ShortOpenPiecesGoUnlessBothEndsAreOnLines)
     ASSERT_EQ(network.lines.size(), 2u);
     EXPECT_DOUBLE_EQ(network.lines[0].points(0, 1), 5.0);
     EXPECT_DOUBLE_EQ(network.lines[1].points(0, 1), 10.0);
+}
+
+// A curvature step of height 1 read on a grid of 8 spacings and carried back to a square
+// lattice: the carried values cross tau = 0.5 over the coarse fit's width, so within two fit
+// radii of the lattice's own sampling a line along the step shows only part of it; at the
+// coarse cells its points were averaged into, the whole step.
+TEST(SmoothEdges, ALineAtACoarserScaleIsJudgedByTheContrastThere)
+{
+    const int half = 40;
+    PointMatrix P(4 * half * half, 3);
+    for (int i = 0, r = 0; i < 2 * half; ++i) {
+        for (int j = 0; j < 2 * half; ++j, ++r) {
+            P.row(r) << i - half + 0.5, j - half + 0.5, 0.0;
+        }
+    }
+    GridCentroids grid = gridCentroids(P, 8.0);
+    auto coarse = std::make_shared<RegionGeometry>();
+    coarse->points = grid.points;
+    coarse->neighbours = nearestNeighbours(grid.points);
+    coarse->spacing = meanSpacing(coarse->neighbours);
+    coarse->curvature.resize(grid.points.rows());
+    for (Eigen::Index c = 0; c < grid.points.rows(); ++c) {
+        coarse->curvature[c] = grid.points(c, 0) > 0.0 ? 1.0 : 0.0;
+    }
+    RegionGeometry g;
+    g.points = P;
+    g.neighbours = nearestNeighbours(P);
+    g.spacing = meanSpacing(g.neighbours);
+    g.curvature = valuesAtPoints(P, grid, coarse->neighbours, coarse->curvature, 4.0);
+    // The line's points: the two columns either side of x = 0, away from the lattice's ends.
+    std::vector<int> line;
+    for (Eigen::Index r = 0; r < P.rows(); ++r) {
+        if (std::abs(P(r, 0)) < 1.0 && std::abs(P(r, 1)) < half - 10) {
+            line.push_back(static_cast<int>(r));
+        }
+    }
+    ASSERT_EQ(line.size(), 2u * (2 * half - 20));
+
+    const double own = lineContrast(g, g.curvature, 0.5, line);
+    EXPECT_GT(own, 0.0);
+    EXPECT_LT(own, 0.6) << "two fit radii of the lattice see about half the ramp";
+
+    g.curvatureScale = 8.0;
+    g.coarse = coarse;
+    g.coarseRowOf = grid.cellOf;
+    EXPECT_NEAR(lineContrast(g, g.curvature, 0.5, line), 1.0, 1e-12);
+    // One level only: no contrast.
+    EXPECT_EQ(lineContrast(g, g.curvature, 2.0, line), 0.0);
 }
