@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
+
 #include "FeatureLines/HugePages.h"
 #include "FeatureLines/Neighbours.h"
 
@@ -88,6 +92,11 @@ TEST(HugePages, NeighbourListsOfAMillionPointsLieOnHugePages)
     if (mode != "always" && mode != "madvise") {
         GTEST_SKIP() << "transparent huge pages are '" << mode << "' here";
     }
+#if defined(__linux__) && defined(PR_GET_THP_DISABLE)
+    if (prctl(PR_GET_THP_DISABLE, 0, 0, 0, 0) == 1) {
+        GTEST_SKIP() << "transparent huge pages are switched off for this process";
+    }
+#endif
     const long before = anonHugePagesKb();
     if (before < 0) {
         GTEST_SKIP() << "/proc/self/smaps_rollup does not say";
