@@ -297,7 +297,24 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
             const PointMatrix& V = network.lines[static_cast<size_t>(fitted[t].first)].points;
             const Eigen::Index m = V.rows(), i = fitted[t].second;
             const Eigen::RowVector3d v = V.row(i);
-            const Eigen::RowVector3d tangent = V.row((i + 1) % m) - V.row((i + m - 1) % m);
+            // The line's direction over the strip's length: from the vertex half a strip
+            // length back to the one half a strip length ahead (the line's own vertices zigzag
+            // by a coarse spacing; their neighbours' chord can be tens of degrees off).
+            const bool closed = network.lines[static_cast<size_t>(fitted[t].first)].closed;
+            const auto reachAlong = [&](Eigen::Index step) {
+                Eigen::Index j = i;
+                double walked = 0.0;
+                for (Eigen::Index s = 0; s + 1 < m && walked < L * fitSpacing; ++s) {
+                    const Eigen::Index next = closed ? (j + step + m) % m : j + step;
+                    if (next < 0 || next >= m) {
+                        break;
+                    }
+                    walked += (V.row(next) - V.row(j)).norm();
+                    j = next;
+                }
+                return j;
+            };
+            const Eigen::RowVector3d tangent = V.row(reachAlong(1)) - V.row(reachAlong(-1));
             // The strip's frame at `centre`: the surface normal from the points within a fit
             // spacing (their normals turned alike), the line's direction in the tangent plane,
             // and across it. False where the points do not give one.

@@ -189,6 +189,35 @@ TEST(LinePlacement, ABorderBeyondOneStripIsFoundFromItsEdge)
     }
 }
 
+// The coarse field's lines zigzag: here by 1.5 spacings across, in runs of two vertices, so
+// the chord between a vertex's two neighbours is 45 degrees off the border. Each strip is laid
+// along the line's direction over the strip's own length, and the line comes onto the border
+// (its zigzag stays: the vertices between fitted ones move as their fitted neighbours do).
+TEST(LinePlacement, AZigzagLineIsPlacedAlongItsDirectionOverTheStrip)
+{
+    const double h = 1.0, scale = 8.0;
+    const shapes::Sample s = filletedStep(60.0, 100.0, h, 0.3, 3);
+    Polyline line = lineAlongY(-5.0, 0.0, 40.0, 1.5);
+    for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+        line.points(i, 0) += (i / 2) % 2 == 0 ? 1.5 : -1.5;
+    }
+    LineNetwork network = networkOf(line);
+    placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0);
+    const PointMatrix& V = network.lines[0].points;
+    double sum = 0.0;
+    int count = 0;
+    for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
+        // Away from the ends' taper (a stride: 12).
+        if (std::abs(V(i, 1)) <= 40.0 - 12.0) {
+            EXPECT_LT(std::abs(V(i, 0)), 1.5 + 1.5 * h) << "vertex " << i;
+            sum += V(i, 0);
+            ++count;
+        }
+    }
+    ASSERT_GT(count, 0);
+    EXPECT_NEAR(sum / count, 0.0, 0.5 * h) << "the line's mean place: the border";
+}
+
 // Beyond what the strips reach (one strip: 4 spacings; three: 12), the vertices stay.
 TEST(LinePlacement, ABorderBeyondTheLargestShiftIsLeftAlone)
 {
