@@ -227,11 +227,15 @@ double median(std::vector<double>& v)
 } // namespace
 
 int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const NormalMatrix& N,
-                          double spacing, double fitSpacing, double threshold,
-                          const LinePlacementOptions& options)
+                          const Eigen::VectorXd& curvature, double spacing, double fitSpacing,
+                          double threshold, const LinePlacementOptions& options)
 {
     if (P.rows() != N.rows()) {
         throw std::invalid_argument("line placement: every point needs a normal");
+    }
+    if (curvature.size() != 0 && curvature.size() != P.rows()) {
+        throw std::invalid_argument(
+            "line placement: the curvature must be given for every point or for none");
     }
     if (!(spacing > 0.0) || !std::isfinite(spacing) || !(fitSpacing >= spacing) ||
         !std::isfinite(fitSpacing) || !(threshold >= 0.0) || !std::isfinite(threshold)) {
@@ -292,6 +296,7 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
     {
         std::vector<int> near;
         std::vector<StripPoint> strip;
+        std::vector<double> high;
 #pragma omp for schedule(dynamic, 4)
         for (size_t t = 0; t < fitted.size(); ++t) {
             const PointMatrix& V = network.lines[static_cast<size_t>(fitted[t].first)].points;
@@ -348,23 +353,53 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
                 c = across[t].norm() > 0.0 && cross.dot(across[t]) < 0.0 ? -cross : cross;
                 return true;
             };
+            // The strip is narrowed to the fillet the points on the line's high side show, where
+            // it is smaller than the threshold implies (a fillet whose radius varies along it,
+            // a threshold low in its valley): 0.4 of the radius of the cylinder with their
+            // median |H|, r = 1 / (2 |H|). Needs the frame at v (n, a, c).
+            const auto stripWidth = [&](const Eigen::RowVector3d& at) {
+                if (curvature.size() == 0 || !(threshold > 0.0)) {
+                    return W;
+                }
+                high.clear();
+                for (int p : near) {
+                    const Eigen::RowVector3d d = (P.row(p) - at) / fitSpacing;
+                    const double value = std::abs(curvature[p]);
+                    if (value > threshold && std::abs(d.dot(c)) <= W && std::abs(d.dot(a)) <= L) {
+                        high.push_back(value);
+                    }
+                }
+                if (high.empty()) {
+                    return W;
+                }
+                // The lower quartile: where a corner's sphere (|H| of a cylinder of half its
+                // radius) shares the high side with the fillet, the fillet's values.
+                const size_t quartile = high.size() / 4;
+                std::nth_element(high.begin(), high.begin() + static_cast<std::ptrdiff_t>(quartile),
+                                 high.end());
+                const double radius = 1.0 / (2.0 * high[quartile]);
+                return std::max(options.halfWidth,
+                                std::min(W, options.radiusShare * radius / fitSpacing));
+            };
             Eigen::RowVector3d centre = v;
+            double width = W; // this vertex's strip half width
             for (int attempt = 0; attempt <= options.recentres; ++attempt) {
                 if (!frameAt(centre)) {
                     break;
                 }
                 if (attempt == 0) {
                     across[t] = c;
+                    width = stripWidth(v);
                 }
                 strip.clear();
                 for (int p : near) {
                     const Eigen::RowVector3d d = (P.row(p) - centre) / fitSpacing;
                     const StripPoint sp{d.dot(c), d.dot(a), d.dot(n)};
-                    if (std::abs(sp.u) <= W && std::abs(sp.a) <= L && std::abs(sp.z) <= W) {
+                    if (std::abs(sp.u) <= width && std::abs(sp.a) <= L && std::abs(sp.z) <= width) {
                         strip.push_back(sp);
                     }
                 }
-                const StepFit fit = curvatureStep(strip, options.maxShift * W, step, options);
+                const StepFit fit = curvatureStep(strip, options.maxShift * width, step, options);
                 if (std::isfinite(fit.u)) {
                     shift[t] = (centre + fit.u * fitSpacing * c - v).dot(across[t]) / fitSpacing;
                     break;
@@ -373,7 +408,7 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
                     break;
                 }
                 // The border lies beyond the range: the next strip is centred on its edge.
-                centre += fit.edge * options.maxShift * W * fitSpacing * c;
+                centre += fit.edge * options.maxShift * width * fitSpacing * c;
             }
         }
     }

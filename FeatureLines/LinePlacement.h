@@ -66,6 +66,10 @@ struct LinePlacementOptions
 /// step found in the points under it (see above); vertices where no step is found with the
 /// evidence asked, and the two end vertices of an open line (a junction or an anchor), stay.
 ///   P, N        #P by 3 region points and their unit normals (unoriented)
+///   curvature   empty, or #P the points' mean curvature (the values the line was drawn on):
+///               where given, a strip is narrowed to radiusShare of the radius of the fillet
+///               the points on the line's high side show (1 / (2 median |H|)) when that is
+///               smaller than the threshold's
 ///   spacing     the region's mean point spacing
 ///   fitSpacing  the spacing the line was found at (>= spacing)
 ///   threshold   the curvature threshold the line parts (|H|, 1 / length unit; 0: unknown,
@@ -73,7 +77,7 @@ struct LinePlacementOptions
 /// Returns the number of vertices moved. Throws std::invalid_argument for sizes that disagree,
 /// a spacing that is not positive, or options out of range.
 int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const NormalMatrix& N,
-                          double spacing, double fitSpacing, double threshold,
-                          const LinePlacementOptions& options = {});
+                          const Eigen::VectorXd& curvature, double spacing, double fitSpacing,
+                          double threshold, const LinePlacementOptions& options = {});
 
 } // namespace featurelines

@@ -1280,8 +1280,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         dropLines(level.network, anchored, weak);
     }
     if (options.placeCoarseLines && region.curvatureScale > 1.0) {
-        placeOnCurvatureSteps(level.network, region.points, region.normals, region.spacing,
-                              region.curvatureScale * region.spacing, threshold, options.placement);
+        placeOnCurvatureSteps(level.network, region.points, region.normals, region.curvature,
+                              region.spacing, region.curvatureScale * region.spacing, threshold,
+                              options.placement);
     }
     anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
                               options.anchorAngle);

@@ -87,8 +87,8 @@ TEST(LinePlacement, VerticesComeOntoTheFilletBorder)
         for (double offset : {-5.0, 5.0}) {
             LineNetwork network = networkOf(lineAlongY(offset, 0.0, 30.0, 1.5));
             const PointMatrix before = network.lines[0].points;
-            const int moved =
-                placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0);
+            const int moved = placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(),
+                                                    h, scale * h, 0.0);
             const PointMatrix& V = network.lines[0].points;
             EXPECT_GT(moved, V.rows() / 2) << "sigma " << sigma << " offset " << offset;
             for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
@@ -121,7 +121,7 @@ TEST(LinePlacement, TheFarBorderIsFoundToo)
     const Eigen::RowVector3d start(r * std::sin(back), 0, r * (1 - std::cos(back)));
     Polyline line = lineAlongY(start.x(), start.z(), 30.0, 1.5);
     LineNetwork network = networkOf(line);
-    placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0);
+    placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0);
     const PointMatrix& V = network.lines[0].points;
     for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
         if (std::abs(V(i, 1)) > 30.0 - 12.0) {
@@ -143,7 +143,9 @@ TEST(LinePlacement, NoStepNoMove)
         return p;
     }();
     LineNetwork onPlane = networkOf(lineAlongY(2.0, 0.0, 20.0, 1.5));
-    EXPECT_EQ(placeOnCurvatureSteps(onPlane, plane.points, plane.normals, h, 4 * h, 0.0), 0);
+    EXPECT_EQ(placeOnCurvatureSteps(onPlane, plane.points, plane.normals, Eigen::VectorXd(), h,
+                                    4 * h, 0.0),
+              0);
 
     const double R = 30.0;
     const shapes::Sample sphere = shapes::sphere(R, 1.0, 9);
@@ -159,7 +161,9 @@ TEST(LinePlacement, NoStepNoMove)
             R * std::sin(lat);
     }
     LineNetwork onSphere = networkOf(circle);
-    EXPECT_EQ(placeOnCurvatureSteps(onSphere, sphere.points, sphere.normals, h, 4 * h, 0.0), 0);
+    EXPECT_EQ(placeOnCurvatureSteps(onSphere, sphere.points, sphere.normals, Eigen::VectorXd(), h,
+                                    4 * h, 0.0),
+              0);
 }
 
 // A line 6 spacings off a border, found at a scale of 4: one strip (half width 12, shifts up to
@@ -174,7 +178,8 @@ TEST(LinePlacement, ABorderBeyondOneStripIsFoundFromItsEdge)
             LinePlacementOptions options;
             options.maxShift = 1.0 / 3.0; // 4 spacings of a strip 12 wide
             LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
-            placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0, options);
+            placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h,
+                                  0.0, options);
             const PointMatrix& V = network.lines[0].points;
             for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
                 // A stride is half the strip's length: 6.
@@ -202,7 +207,7 @@ TEST(LinePlacement, AZigzagLineIsPlacedAlongItsDirectionOverTheStrip)
         line.points(i, 0) += (i / 2) % 2 == 0 ? 1.5 : -1.5;
     }
     LineNetwork network = networkOf(line);
-    placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0);
+    placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0);
     const PointMatrix& V = network.lines[0].points;
     double sum = 0.0;
     int count = 0;
@@ -218,6 +223,40 @@ TEST(LinePlacement, AZigzagLineIsPlacedAlongItsDirectionOverTheStrip)
     EXPECT_NEAR(sum / count, 0.0, 0.5 * h) << "the line's mean place: the border";
 }
 
+// A threshold low in its valley implies a fillet larger than the one the points show (radius
+// 60 spacings against 10 here), and a strip that wide would reach over the whole fillet into
+// the plane beyond it, a second hinge. Given the points' curvature, the strip is narrowed to
+// 0.4 of the radius the points on the line's high side show, and the border is found.
+TEST(LinePlacement, TheStripNarrowsToTheFilletThePointsShow)
+{
+    const double h = 1.0, scale = 2.0, r = 10.0;
+    const shapes::Sample s = filletedStep(r, 60.0, h, 0.3, 3);
+    Eigen::VectorXd H(s.points.rows());
+    for (Eigen::Index i = 0; i < H.size(); ++i) {
+        const double x = s.points(i, 0);
+        H[i] = x >= 0.0 && x <= r * std::sin(M_PI / 4) ? 1.0 / (2.0 * r) : 0.0;
+    }
+    const double threshold = 1.0 / (4.0 * 60.0);
+    const auto meanDistance = [&](const Eigen::VectorXd& curvature) {
+        LineNetwork network = networkOf(lineAlongY(-2.0, 0.0, 20.0, 1.5));
+        placeOnCurvatureSteps(network, s.points, s.normals, curvature, h, scale * h, threshold);
+        const PointMatrix& V = network.lines[0].points;
+        double sum = 0.0;
+        int count = 0;
+        for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
+            if (std::abs(V(i, 1)) <= 10.0) {
+                sum += std::abs(V(i, 0));
+                ++count;
+            }
+        }
+        return sum / count;
+    };
+    const double narrowed = meanDistance(H), wide = meanDistance(Eigen::VectorXd());
+    EXPECT_LT(narrowed, h);
+    EXPECT_LT(narrowed, wide) << "the strip as wide as the threshold implies reaches past the "
+                                 "fillet";
+}
+
 // Beyond what the strips reach (one strip: 4 spacings; three: 12), the vertices stay.
 TEST(LinePlacement, ABorderBeyondTheLargestShiftIsLeftAlone)
 {
@@ -229,7 +268,8 @@ TEST(LinePlacement, ABorderBeyondTheLargestShiftIsLeftAlone)
         options.recentres = recentres;
         LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
         const PointMatrix before = network.lines[0].points;
-        EXPECT_EQ(placeOnCurvatureSteps(network, s.points, s.normals, h, scale * h, 0.0, options),
+        EXPECT_EQ(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h,
+                                        scale * h, 0.0, options),
                   0)
             << recentres << " re-centred strips, the border " << -offset << " off";
         EXPECT_TRUE(network.lines[0].points == before);
@@ -240,14 +280,21 @@ TEST(LinePlacement, BadInputIsRefused)
 {
     const shapes::Sample s = filletedStep(40.0, 20.0, 1.0, 0.0, 3);
     LineNetwork network = networkOf(lineAlongY(0.0, 0.0, 5.0, 1.5));
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals.topRows(3), 1.0, 4.0, 0.0),
+    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals.topRows(3), Eigen::VectorXd(),
+                                       1.0, 4.0, 0.0),
                  std::invalid_argument);
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, 0.0, 4.0, 0.0),
+    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd::Ones(3), 1.0,
+                                       4.0, 0.0),
                  std::invalid_argument);
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, 1.0, 0.5, 0.0),
-                 std::invalid_argument);
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, 1.0, NAN, 0.0),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 0.0, 4.0, 0.0),
+        std::invalid_argument);
+    EXPECT_THROW(
+        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0, 0.5, 0.0),
+        std::invalid_argument);
+    EXPECT_THROW(
+        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0, NAN, 0.0),
+        std::invalid_argument);
     for (auto set : {+[](LinePlacementOptions& o) { o.halfWidth = 0; },
                      +[](LinePlacementOptions& o) { o.halfLength = -1; },
                      +[](LinePlacementOptions& o) { o.maxShift = INFINITY; },
@@ -258,12 +305,15 @@ TEST(LinePlacement, BadInputIsRefused)
                      +[](LinePlacementOptions& o) { o.recentres = -1; }}) {
         LinePlacementOptions o;
         set(o);
-        EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, 1.0, 4.0, 0.0, o),
+        EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0,
+                                           4.0, 0.0, o),
                      std::invalid_argument);
     }
     // Nothing to place on: no points, no lines.
-    EXPECT_EQ(placeOnCurvatureSteps(network, PointMatrix(0, 3), NormalMatrix(0, 3), 1.0, 4.0, 0.0),
+    EXPECT_EQ(placeOnCurvatureSteps(network, PointMatrix(0, 3), NormalMatrix(0, 3),
+                                    Eigen::VectorXd(), 1.0, 4.0, 0.0),
               0);
     LineNetwork none;
-    EXPECT_EQ(placeOnCurvatureSteps(none, s.points, s.normals, 1.0, 4.0, 0.0), 0);
+    EXPECT_EQ(placeOnCurvatureSteps(none, s.points, s.normals, Eigen::VectorXd(), 1.0, 4.0, 0.0),
+              0);
 }
