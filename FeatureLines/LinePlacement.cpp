@@ -356,7 +356,7 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
             // The strip is narrowed to the fillet the points on the line's high side show, where
             // it is smaller than the threshold implies (a fillet whose radius varies along it,
             // a threshold low in its valley): 0.4 of the radius of the cylinder with their
-            // median |H|, r = 1 / (2 |H|). Needs the frame at v (n, a, c).
+            // lower quartile of |H|, r = 1 / (2 |H|). Needs the frame at v (n, a, c).
             const auto stripWidth = [&](const Eigen::RowVector3d& at) {
                 if (curvature.size() == 0 || !(threshold > 0.0)) {
                     return W;
