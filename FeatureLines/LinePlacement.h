@@ -68,8 +68,8 @@ struct LinePlacementOptions
 ///   P, N        #P by 3 region points and their unit normals (unoriented)
 ///   curvature   empty, or #P the points' mean curvature (the values the line was drawn on):
 ///               where given, a strip is narrowed to radiusShare of the radius of the fillet
-///               the points on the line's high side show (1 / (2 |H|), |H| their lower quartile) when that is
-///               smaller than the threshold's
+///               the points on the line's high side show (1 / (2 |H|), |H| their lower
+///               quartile) when that is smaller than the threshold's
 ///   spacing     the region's mean point spacing
 ///   fitSpacing  the spacing the line was found at (>= spacing)
 ///   threshold   the curvature threshold the line parts (|H|, 1 / length unit; 0: unknown,
