@@ -16,7 +16,7 @@ namespace featurelines {
 /// on systems other than Linux. The memory must come from the allocator (not the stack).
 void adviseHugePages(void* data, std::size_t bytes);
 
-/// adviseHugePages over the storage of an Eigen matrix or a std::vector (its capacity).
+/// adviseHugePages over the coefficients of an Eigen matrix (allocated, not yet written).
 template <class Array> void adviseHugePagesOf(Array& array)
 {
     adviseHugePages(array.data(),

@@ -23,7 +23,7 @@ namespace {
 class CellIndex
 {
 public:
-    CellIndex(const PointMatrix& P, double cell) : P_(P), cell_(cell)
+    CellIndex(const PointMatrix& P, double cell) : cell_(cell)
     {
         low_ =
             P.rows() > 0 ? Eigen::RowVector3d(P.colwise().minCoeff()) : Eigen::RowVector3d::Zero();
@@ -74,7 +74,6 @@ public:
     }
 
 private:
-    const PointMatrix& P_;
     double cell_;
     Eigen::RowVector3d low_;
     std::vector<std::pair<std::uint64_t, int>> keyed_;
@@ -356,14 +355,15 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
             // The strip is narrowed to the fillet the points on the line's high side show, where
             // it is smaller than the threshold implies (a fillet whose radius varies along it,
             // a threshold low in its valley): 0.4 of the radius of the cylinder with their
-            // lower quartile of |H|, r = 1 / (2 |H|). Needs the frame at v (n, a, c).
-            const auto stripWidth = [&](const Eigen::RowVector3d& at) {
+            // lower quartile of |H|, r = 1 / (2 |H|). Needs the frame at v (n, a, c) and the
+            // points near it.
+            const auto stripWidth = [&]() {
                 if (curvature.size() == 0 || !(threshold > 0.0)) {
                     return W;
                 }
                 high.clear();
                 for (int p : near) {
-                    const Eigen::RowVector3d d = (P.row(p) - at) / fitSpacing;
+                    const Eigen::RowVector3d d = (P.row(p) - v) / fitSpacing;
                     const double value = std::abs(curvature[p]);
                     if (value > threshold && std::abs(d.dot(c)) <= W && std::abs(d.dot(a)) <= L) {
                         high.push_back(value);
@@ -389,7 +389,7 @@ int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const Norm
                 }
                 if (attempt == 0) {
                     across[t] = c;
-                    width = stripWidth(v);
+                    width = stripWidth();
                 }
                 strip.clear();
                 for (int p : near) {

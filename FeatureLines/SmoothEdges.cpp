@@ -283,7 +283,6 @@ double localContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, 
     return median(std::move(high)) - median(std::move(low));
 }
 
-
 /// The largest patches of the curvature levels (low, tau] and (tau, high]: points with values
 /// in the level whose whole 1-ring is in it too (the inner points of Sec. 3 for that level),
 /// connected through the 1-rings; returns their numbers of points, {above, below}. Both levels
