@@ -30,9 +30,9 @@
 #include "ExtractionFeature.h"
 #include "ExtractionParameters.h"
 #include "ExtractionProgress.h"
-#include "FeatureLines/CloudIO.h"
-#include "FeatureLines/Curvature.h"
-#include "FeatureLines/HistogramThreshold.h"
+#include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/curvature/Curvature.h"
+#include "FeatureLines/smooth/HistogramThreshold.h"
 #include "InteractiveThresholds.h"
 #include "PropertyPointIndices.h"
 

@@ -12,12 +12,12 @@
 
 #include <omp.h>
 
-#include "FeatureLines/CloudIO.h"
-#include "FeatureLines/DisjointSets.h"
-#include "FeatureLines/HugePages.h"
-#include "FeatureLines/IdleThreads.h"
-#include "FeatureLines/MortonOrder.h"
-#include "FeatureLines/Normals.h"
+#include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/support/DisjointSets.h"
+#include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/support/IdleThreads.h"
+#include "FeatureLines/neighbourhoods/MortonOrder.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
 
 namespace featurelines {
 

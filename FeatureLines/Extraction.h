@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/SharpEdges.h"
-#include "FeatureLines/SmoothEdges.h"
-#include "FeatureLines/SmoothRegions.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/sharp/SharpEdges.h"
+#include "FeatureLines/smooth/SmoothEdges.h"
+#include "FeatureLines/smooth/SmoothRegions.h"
 
 namespace featurelines {
 

@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "FeatureLines/CloudIO.h"
-#include "FeatureLines/Curvature.h"
+#include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/curvature/Curvature.h"
 #include "FeatureLines/Extraction.h"
-#include "FeatureLines/HistogramThreshold.h"
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/smooth/HistogramThreshold.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/curvature/Smoothing.h"
 #include "FeatureLines/cli/Arguments.h"
 #include "FeatureLines/cli/Json.h"
 

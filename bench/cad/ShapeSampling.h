@@ -60,7 +60,7 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
 void addNormalNoise(SampledCloud& cloud, double sigma, std::uint32_t seed);
 
 /// Mean distance from each point to its nearest other point at a distance above zero, the
-/// definition of the core library's meanSpacing (FeatureLines/Neighbours.h).
+/// definition of the core library's meanSpacing (FeatureLines/neighbourhoods/Neighbours.h).
 double meanNearestSpacing(const PointMatrix& P);
 
 struct TruthOptions

@@ -7,8 +7,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "FeatureLines/Boundary.h"
-#include "FeatureLines/Normals.h"
+#include "FeatureLines/boundary/Boundary.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

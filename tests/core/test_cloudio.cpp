@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/CloudIO.h"
+#include "FeatureLines/io/CloudIO.h"
 
 using namespace featurelines;
 namespace fs = std::filesystem;

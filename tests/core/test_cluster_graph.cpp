@@ -11,7 +11,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "FeatureLines/ClusterGraph.h"
+#include "FeatureLines/network/ClusterGraph.h"
 
 using namespace featurelines;
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/Curvature.h"
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/curvature/Curvature.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/curvature/Smoothing.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

@@ -12,10 +12,10 @@
 #include <set>
 #include <string>
 
-#include "FeatureLines/CurvatureScale.h"
+#include "FeatureLines/curvature/CurvatureScale.h"
 #include "FeatureLines/Extraction.h"
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/SmoothEdges.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/smooth/SmoothEdges.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

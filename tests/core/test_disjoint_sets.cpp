@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/DisjointSets.h"
+#include "FeatureLines/support/DisjointSets.h"
 
 using namespace featurelines;
 

@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "FeatureLines/FirstOrderSegmentation.h"
-#include "FeatureLines/Normals.h"
+#include "FeatureLines/sharp/FirstOrderSegmentation.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/Curvature.h"
-#include "FeatureLines/HistogramThreshold.h"
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/curvature/Curvature.h"
+#include "FeatureLines/smooth/HistogramThreshold.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/curvature/Smoothing.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

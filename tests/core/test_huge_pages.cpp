@@ -12,8 +12,8 @@
 #include <sys/prctl.h>
 #endif
 
-#include "FeatureLines/HugePages.h"
-#include "FeatureLines/Neighbours.h"
+#include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
 
 using namespace featurelines;
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/LinePlacement.h"
+#include "FeatureLines/smooth/LinePlacement.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

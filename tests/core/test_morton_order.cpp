@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/MortonOrder.h"
+#include "FeatureLines/neighbourhoods/MortonOrder.h"
 
 using namespace featurelines;
 

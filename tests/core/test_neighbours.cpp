@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/MortonOrder.h"
-#include "FeatureLines/Neighbours.h"
+#include "FeatureLines/neighbourhoods/MortonOrder.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
 
 using namespace featurelines;
 

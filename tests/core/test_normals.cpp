@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "FeatureLines/Normals.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

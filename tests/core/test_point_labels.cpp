@@ -5,10 +5,10 @@
 
 #include <set>
 
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/PointLabels.h"
-#include "FeatureLines/RingNeighbourhood.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/PointLabels.h"
+#include "FeatureLines/neighbourhoods/RingNeighbourhood.h"
 
 using namespace featurelines;
 

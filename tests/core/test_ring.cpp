@@ -8,8 +8,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/RingNeighbourhood.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/neighbourhoods/RingNeighbourhood.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

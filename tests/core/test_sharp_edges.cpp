@@ -13,8 +13,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/SharpEdges.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/sharp/SharpEdges.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

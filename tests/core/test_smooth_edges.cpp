@@ -11,10 +11,10 @@
 #include <memory>
 #include <random>
 
-#include "FeatureLines/CurvatureScale.h"
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/Normals.h"
-#include "FeatureLines/SmoothEdges.h"
+#include "FeatureLines/curvature/CurvatureScale.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/SmoothEdges.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

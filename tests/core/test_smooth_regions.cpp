@@ -7,8 +7,8 @@
 #include <cmath>
 #include <set>
 
-#include "FeatureLines/Neighbours.h"
-#include "FeatureLines/SmoothRegions.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/smooth/SmoothRegions.h"
 
 using namespace featurelines;
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "FeatureLines/Smoothing.h"
+#include "FeatureLines/curvature/Smoothing.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/boundary/Boundary.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Geometry>
+#include <omp.h>
+
+namespace featurelines {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+int threadCount(int requested)
+{
+    return requested > 0 ? requested : omp_get_max_threads();
+}
+
+/// A number in [0, 4) that grows with the angle of (x, y) from +x, anticlockwise (the
+/// "diamond angle"): it orders directions like the angle does, without trigonometry.
+double pseudoAngle(double x, double y)
+{
+    if (y >= 0.0) {
+        return x >= 0.0 ? y / (x + y) : 1.0 - x / (y - x);
+    }
+    return x < 0.0 ? 2.0 - y / (-x - y) : 3.0 + x / (x - y);
+}
+
+/// Which of the eight 45 degree sectors bounded by the axes and the diagonals holds (x, y),
+/// as a number 0..7 (signs of x and y, and whether |x| > |y|): no branches, which the
+/// processor would mispredict half the time.
+int octant(double x, double y)
+{
+    return (y >= 0.0 ? 4 : 0) | (x > 0.0 ? 2 : 0) | (std::abs(x) > std::abs(y) ? 1 : 0);
+}
+
+} // namespace
+
+std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& normals,
+                                 const Neighbourhoods& N, const BoundaryOptions& options)
+{
+    const Eigen::Index n = P.rows();
+    if (normals.rows() != n || N.size() != n) {
+        throw std::invalid_argument(
+            "boundary: the normals and neighbourhoods must have one row per point (" +
+            std::to_string(n) + " points, " + std::to_string(normals.rows()) + " normals, " +
+            std::to_string(N.size()) + " neighbourhoods)");
+    }
+    if (!(options.minGapAngle > 0.0 && options.minGapAngle < 360.0)) {
+        throw std::invalid_argument(
+            "boundary: the gap angle must be between 0 and 360 degrees, not " +
+            std::to_string(options.minGapAngle));
+    }
+    const int k = N.k();
+    const double minGap = options.minGapAngle * pi / 180.0;
+    const double cosMinGap = std::cos(minGap);
+    const double cos22 = std::cos(pi / 8.0), sin22 = std::sin(pi / 8.0);
+    std::vector<char> boundary(n, 0);
+#pragma omp parallel num_threads(threadCount(options.threads))
+    {
+        std::vector<double> xs(k), ys(k);
+        std::vector<std::pair<double, int>> order(k);
+#pragma omp for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            // A frame of the tangent plane.
+            const Eigen::Vector3d normal = normals.row(i).transpose();
+            const Eigen::Vector3d helper =
+                std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+            const Eigen::Vector3d u = normal.cross(helper).normalized();
+            const Eigen::Vector3d v = normal.cross(u);
+            const double tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
+            const double* p = P.data() + 3 * i;
+            int count = 0;
+            unsigned sectors = 0;
+            unsigned turned = 0;
+            for (int j = 0; j < k; ++j) {
+                const double* q = P.data() + 3 * static_cast<Eigen::Index>(N.indices(i, j));
+                const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+                xs[j] = dx * u.x() + dy * u.y() + dz * u.z();
+                ys[j] = dx * v.x() + dy * v.y() + dz * v.z();
+                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
+                    sectors |= 1u << octant(xs[j], ys[j]);
+                    turned |=
+                        1u << octant(cos22 * xs[j] + sin22 * ys[j], cos22 * ys[j] - sin22 * xs[j]);
+                    ++count;
+                }
+            }
+            // A gap wider than 90 degrees contains a whole 45 degree sector, of the eight from
+            // +x and of the eight turned by 22.5 degrees: with all eight occupied in either
+            // there is none, and no angle needs computing (most points).
+            if (count == 0 ||
+                ((sectors == 0xFF || turned == 0xFF) && options.minGapAngle >= 90.0)) {
+                continue;
+            }
+            // Otherwise order the directions by angle and look for a gap wider than the
+            // limit between consecutive ones, comparing cosines instead of angles.
+            count = 0;
+            for (int j = 0; j < k; ++j) {
+                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
+                    order[count++] = {pseudoAngle(xs[j], ys[j]), j};
+                }
+            }
+            std::sort(order.begin(), order.begin() + count);
+            bool wide = count == 1;
+            for (int a = 0; a < count && !wide; ++a) {
+                const int from = order[a].second;
+                const int to = order[(a + 1) % count].second;
+                const double dot = xs[from] * xs[to] + ys[from] * ys[to];
+                const double cross = xs[from] * ys[to] - ys[from] * xs[to];
+                const double cosine = dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
+                                                      (xs[to] * xs[to] + ys[to] * ys[to]));
+                if (cross > 0.0) {
+                    // The gap is below 180 degrees: acos(cosine).
+                    wide = minGap < pi && cosine < cosMinGap;
+                } else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
+                    // At least 180 degrees: 2 pi - acos(cosine) (all the circle when the last
+                    // direction comes back onto the first).
+                    wide = minGap <= pi || cosine > cosMinGap;
+                }
+            }
+            boundary[i] = wide ? 1 : 0;
+        }
+    }
+    return boundary;
+}
+
+Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                         double spacing, const BoundaryOptions& options)
+{
+    if (!(spacing > 0.0) || !std::isfinite(spacing)) {
+        throw std::invalid_argument("boundary: the point spacing must be a positive number");
+    }
+    Boundary result;
+    result.isBoundary = boundaryPoints(P, normals, N, options);
+    // Every boundary point is a candidate cluster of its own; other points are left out.
+    std::vector<int> cluster(result.isBoundary.size(), -1);
+    int count = 0;
+    for (std::size_t i = 0; i < cluster.size(); ++i) {
+        if (result.isBoundary[i]) {
+            cluster[i] = count++;
+        }
+    }
+    const std::vector<char> candidate(count, 1);
+    result.network = buildClusterGraph(P, N, cluster, candidate, spacing, options.graph).network;
+    return result;
+}
+
+} // namespace featurelines

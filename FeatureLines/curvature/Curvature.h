@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Mean curvature by a quadric fitted over each point's k nearest neighbours (Sec. 2.1).
+#pragma once
+
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+
+namespace featurelines {
+
+struct CurvatureOptions
+{
+    /// Neighbours in the fit, at most Neighbourhoods::k() (0: all of them).
+    int k = 0;
+    /// false: |H|, so concave and convex blends of one radius fall in one histogram peak.
+    bool signedCurvature = false;
+    int threads = 0;
+};
+
+/// H  #P mean curvature (1 / length unit) of the height function
+/// z = a x^2 + b xy + c y^2 + d x + e y + f fitted by least squares in the frame of each point's
+/// normal. A sphere of radius r gives 1/r, a cylinder 1/(2r), a plane 0. When signed, the sign
+/// follows the given normal (positive where the surface bends away from it).
+Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
+                              const Neighbourhoods& N, const CurvatureOptions& options = {});
+
+/// The height at point i of the quadric of meanCurvature() fitted to i's neighbours alone
+/// (all N.k() of them, not i itself), in i's normal frame (length unit). On a smooth surface
+/// the quadric predicts the point to third order, so what remains is the point's noise,
+/// whatever the curvature. NaN when the normal, the neighbourhood or the fit is degenerate.
+double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                     Eigen::Index i);
+
+} // namespace featurelines

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/io/CloudIO.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "FeatureLines/support/HugePages.h"
+
+namespace featurelines {
+
+namespace detail {
+/// Reads a .ply (ply == true) or .pcd file through PCL (CloudIOPcl.cpp, the only file that
+/// sees PCL's headers). The file exists and is a regular file.
+PointMatrix readPclCloud(const std::string& path, bool ply);
+} // namespace detail
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowercaseExtension(const std::string& path)
+{
+    std::string extension = fs::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+bool isSeparator(char c)
+{
+    return c == ' ' || c == '\t' || c == ',';
+}
+
+/// One token for a message: at most 20 characters, so a binary file gives a readable line.
+std::string quoted(std::string_view token)
+{
+    return "'" + std::string(token.substr(0, 20)) + (token.size() > 20 ? "...'" : "'");
+}
+
+/// The text formats: one point per line, the first three numbers of a line are x y z.
+/// std::from_chars is exact, fast and does not follow the process locale (FreeCAD's GUI
+/// may run under one whose decimal separator is a comma).
+PointMatrix readText(const std::string& path)
+{
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        throw std::invalid_argument(path + ": the file cannot be opened for reading");
+    }
+    file.seekg(0, std::ios::end);
+    std::string text(static_cast<std::size_t>(std::max<std::streamoff>(0, file.tellg())), '\0');
+    file.seekg(0, std::ios::beg);
+    file.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!file) {
+        throw std::invalid_argument(path + ": reading the file failed");
+    }
+
+    std::vector<double> xyz;
+    xyz.reserve(text.size() / 16);
+    adviseHugePages(xyz.data(), xyz.capacity() * sizeof(double));
+    const char* cursor = text.data();
+    const char* const end = text.data() + text.size();
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) { // UTF-8 byte order mark
+        cursor += 3;
+    }
+    long lineNumber = 0;
+    while (cursor < end) {
+        ++lineNumber;
+        const char* lineEnd = std::find(cursor, end, '\n');
+        const char* next = lineEnd == end ? end : lineEnd + 1;
+        if (lineEnd > cursor && lineEnd[-1] == '\r') { // CRLF
+            --lineEnd;
+        }
+        const char* p = cursor;
+        cursor = next;
+        while (p < lineEnd && (*p == ' ' || *p == '\t')) {
+            ++p;
+        }
+        // Blank lines, comments, and header lines such as FreeCAD's "# ..." are skipped.
+        if (p == lineEnd || *p == '#' || *p == '%' ||
+            (*p == '/' && p + 1 < lineEnd && p[1] == '/')) {
+            continue;
+        }
+        const std::string where = path + ", line " + std::to_string(lineNumber) + ": ";
+        for (int coordinate = 0; coordinate < 3; ++coordinate) {
+            while (p < lineEnd && isSeparator(*p)) {
+                ++p;
+            }
+            if (p == lineEnd) {
+                throw std::invalid_argument(where + "only " + std::to_string(coordinate) +
+                                            " number(s), a point needs x y z");
+            }
+            const char* tokenEnd = std::find_if(p, lineEnd, isSeparator);
+            const std::string_view token(p, tokenEnd - p);
+            const char* start = p;
+            if (*start == '+' && start + 1 < tokenEnd) { // from_chars takes no '+'
+                ++start;
+            }
+            double value = 0.0;
+            const auto [parsedEnd, error] = std::from_chars(start, tokenEnd, value);
+            if (error == std::errc::result_out_of_range) {
+                throw std::invalid_argument(where + quoted(token) + " is out of range");
+            }
+            if (error != std::errc() || parsedEnd != tokenEnd) {
+                throw std::invalid_argument(where + quoted(token) + " is not a number");
+            }
+            if (!std::isfinite(value)) {
+                throw std::invalid_argument(where + "coordinate " + quoted(token) +
+                                            " is not a finite number");
+            }
+            xyz.push_back(value);
+            p = tokenEnd;
+        }
+        // Further columns (normals, colours, intensities) are ignored.
+    }
+    if (xyz.empty()) {
+        throw std::invalid_argument(path + ": the file holds no point");
+    }
+    const Eigen::Index n = static_cast<Eigen::Index>(xyz.size() / 3);
+    return Eigen::Map<const PointMatrix>(xyz.data(), n, 3);
+}
+
+} // namespace
+
+PointMatrix readCloud(const std::string& path)
+{
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (!fs::exists(status)) {
+        throw std::invalid_argument(path + ": no such file");
+    }
+    if (fs::is_directory(status)) {
+        throw std::invalid_argument(path + ": is a folder, not a point cloud file");
+    }
+    const std::string extension = lowercaseExtension(path);
+    PointMatrix P;
+    if (extension == ".xyz" || extension == ".txt" || extension == ".asc" || extension == ".csv") {
+        P = readText(path);
+    } else if (extension == ".ply" || extension == ".pcd") {
+        P = detail::readPclCloud(path, extension == ".ply");
+    } else {
+        throw std::invalid_argument(
+            path + ": unknown point cloud format " +
+            (extension.empty() ? std::string("(no extension)") : "'" + extension + "'") +
+            "; known: .xyz .txt .asc .csv .ply .pcd");
+    }
+    checkFinite(P, path);
+    return P;
+}
+
+void writeXyz(const std::string& path, const PointMatrix& P)
+{
+    std::ofstream file(path, std::ios::binary);
+    if (!file) {
+        throw std::invalid_argument(path + ": the file cannot be opened for writing");
+    }
+    // Shortest representation that reads back to the same double (std::to_chars).
+    std::string buffer;
+    char number[32];
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        for (int d = 0; d < 3; ++d) {
+            const auto result = std::to_chars(number, number + sizeof(number), P(i, d));
+            buffer.append(number, result.ptr);
+            buffer.push_back(d < 2 ? ' ' : '\n');
+        }
+        if (buffer.size() > (1 << 20)) {
+            file.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+            buffer.clear();
+        }
+    }
+    file.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    file.close();
+    if (!file) {
+        throw std::invalid_argument(path + ": writing the file failed");
+    }
+}
+
+void checkFinite(const PointMatrix& P, const std::string& what, Eigen::Index minimumPoints)
+{
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        if (!P.row(i).allFinite()) {
+            throw std::invalid_argument(what + ": point " + std::to_string(i + 1) +
+                                        " has a coordinate that is not a finite number");
+        }
+    }
+    if (P.rows() < minimumPoints) {
+        throw std::invalid_argument(what + ": " + std::to_string(minimumPoints) +
+                                    " points at least are needed, there are " +
+                                    std::to_string(P.rows()));
+    }
+}
+
+} // namespace featurelines

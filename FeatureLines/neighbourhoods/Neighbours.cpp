@@ -1,0 +1,481 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <omp.h>
+
+#include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/support/IdleThreads.h"
+#include "FeatureLines/neighbourhoods/MortonOrder.h"
+
+namespace featurelines {
+
+namespace {
+
+int threadCount(int requested)
+{
+    return requested > 0 ? requested : omp_get_max_threads();
+}
+
+/// The occupied cells of one level of the keys' octree (cubes 2^level steps wide, see
+/// MortonGrid), in key order: each cell's code (key >> 3 level) and its run of rows, with a
+/// hash table from code to cell.
+class Cells
+{
+public:
+    Cells(const std::vector<std::uint64_t>& keys, int level)
+    {
+        for (std::size_t j = 0; j < keys.size(); ++j) {
+            const std::uint64_t code = keys[j] >> (3 * level);
+            if (j == 0 || code != codes_.back()) {
+                codes_.push_back(code);
+                first_.push_back(static_cast<int>(j));
+            }
+        }
+        first_.push_back(static_cast<int>(keys.size()));
+        std::size_t size = 16;
+        while (size < 2 * codes_.size()) {
+            size *= 2;
+        }
+        mask_ = size - 1;
+        slots_.assign(size, empty);
+        cellOfSlot_.assign(size, -1);
+        for (std::size_t c = 0; c < codes_.size(); ++c) {
+            std::size_t h = slot(codes_[c]);
+            while (slots_[h] != empty) {
+                h = (h + 1) & mask_;
+            }
+            slots_[h] = codes_[c];
+            cellOfSlot_[h] = static_cast<int>(c);
+        }
+    }
+    long count() const { return static_cast<long>(codes_.size()); }
+    int first(long cell) const { return first_[static_cast<std::size_t>(cell)]; }
+    int end(long cell) const { return first_[static_cast<std::size_t>(cell) + 1]; }
+    /// The cell of a code, or -1 when no point lies in it.
+    int find(std::uint64_t code) const
+    {
+        for (std::size_t h = slot(code);; h = (h + 1) & mask_) {
+            if (slots_[h] == code) {
+                return cellOfSlot_[h];
+            }
+            if (slots_[h] == empty) {
+                return -1;
+            }
+        }
+    }
+
+private:
+    static constexpr std::uint64_t empty = ~std::uint64_t(0); // no code has all 64 bits set
+    std::size_t slot(std::uint64_t code) const
+    {
+        return static_cast<std::size_t>((code * 0x9E3779B97F4A7C15ULL) >> 20) & mask_;
+    }
+    std::vector<std::uint64_t> codes_;
+    std::vector<int> first_;
+    std::vector<std::uint64_t> slots_;
+    std::vector<int> cellOfSlot_;
+    std::size_t mask_ = 0;
+};
+
+/// Candidates of one query: squared distances and indices in P.
+struct Candidates
+{
+    std::vector<double> distance;
+    std::vector<float> rounded;
+    std::vector<int> index;
+
+    void reserve(std::size_t n)
+    {
+        if (distance.size() < n) {
+            const std::size_t size = std::max(n, 2 * distance.size());
+            distance.resize(size);
+            rounded.resize(size);
+            index.resize(size);
+        }
+    }
+};
+
+/// Writes the k nearest of the first `count` candidates (at least k of them, every point at
+/// least as close as the k-th among them), nearest first, the index breaking ties, so the
+/// answer does not depend on the order in which candidates were found (nor on the thread
+/// count). Each candidate goes to its rank, counted branch-free: a comparison sort of about
+/// 1.2 (k + 1) values mispredicts every other branch. The count runs on the distances rounded
+/// to float, four at a time: rounding keeps their order (a smaller rounded value comes from a
+/// smaller distance), so only candidates whose rounded distances are equal are compared
+/// exactly.
+void storeNearest(Candidates& c, std::size_t count, int k, int* indices, double* distances)
+{
+    for (std::size_t a = 0; a < count; ++a) {
+        c.rounded[a] = static_cast<float>(c.distance[a]);
+    }
+    for (std::size_t a = 0; a < count; ++a) {
+        const double da = c.distance[a];
+        const float fa = c.rounded[a];
+        const int ia = c.index[a];
+        int rank = 0, equal = 0;
+        for (std::size_t b = 0; b < count; ++b) { // vectorised
+            rank += c.rounded[b] < fa;
+            equal += c.rounded[b] == fa;
+        }
+        if (equal > 1) { // another candidate than a itself
+            for (std::size_t b = 0; b < count; ++b) {
+                rank += (c.rounded[b] == fa) &
+                        ((c.distance[b] < da) | ((c.distance[b] == da) & (c.index[b] < ia)));
+            }
+        }
+        if (rank < k) {
+            indices[rank] = ia;
+            distances[rank] = da;
+        }
+    }
+}
+
+/// Mean points per cell of the level the search runs on, per neighbour asked for. On a
+/// surface a cell of 0.75 (k + 1) points is about 1.5 times as wide as the k-th neighbour's
+/// distance (sqrt((k + 1) / pi) spacings), so the 27 cells around a point's cell hold its
+/// neighbours; levels come in factors of 4 of points per cell, so cells are 1.5 to 3 times
+/// that distance wide.
+constexpr double pointsPerCellPerNeighbour = 0.75;
+
+/// The radius a query searches first, x the k-th neighbour's distance of the query before it
+/// (points come in spatial order, so the two are close): 1.1 holds about 1.2 k points and
+/// falls short for about one query in a thousand, which then searches again farther.
+constexpr double radiusGuess = 1.1;
+
+} // namespace
+
+void Neighbourhoods::allocate(Eigen::Index rows, int k)
+{
+    indices.resize(rows, k);
+    squaredDistances.resize(rows, k);
+    adviseHugePagesOf(indices);
+    adviseHugePagesOf(squaredDistances);
+}
+
+Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options)
+{
+    const int k = options.k;
+    if (k < 3) {
+        throw std::invalid_argument("neighbours: at least 3 neighbours per point are needed, " +
+                                    std::to_string(k) + " were asked for");
+    }
+    if (P.rows() <= k) {
+        throw std::invalid_argument("neighbours: " + std::to_string(k) +
+                                    " neighbours per point need more than " + std::to_string(k) +
+                                    " points, the cloud has " + std::to_string(P.rows()));
+    }
+    if (P.rows() > Eigen::Index(INT32_MAX)) {
+        throw std::invalid_argument("neighbours: the cloud has more points than the index type "
+                                    "holds");
+    }
+    checkFinite(P, "point cloud");
+
+    const Eigen::Index n = P.rows();
+    const int threads = threadCount(options.threads);
+    Neighbourhoods result;
+    result.allocate(n, k);
+    const MortonGrid grid(P);
+    if (!(grid.scale > 0.0)) {
+        // Every point coincides: the neighbours of each are the others of lowest index.
+        for (Eigen::Index i = 0; i < n; ++i) {
+            for (int c = 0, j = 0; c < k; ++j) {
+                if (j != i) {
+                    result.indices(i, c) = j;
+                    result.squaredDistances(i, c) = 0.0;
+                    ++c;
+                }
+            }
+        }
+        return result;
+    }
+
+    // The points in key order: the cloud itself when it comes in that order (analyseCloud's
+    // canonical order), else a copy. original[j] is the row of P of row j of Q.
+    std::vector<std::uint64_t> keys(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        keys[static_cast<std::size_t>(i)] = grid.key(P, i);
+    }
+    const bool sorted = std::is_sorted(keys.begin(), keys.end());
+    std::vector<int> original;
+    PointMatrix copy;
+    if (!sorted) {
+        std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<std::size_t>(n));
+        for (Eigen::Index i = 0; i < n; ++i) {
+            keyed[static_cast<std::size_t>(i)] = {keys[static_cast<std::size_t>(i)],
+                                                  static_cast<int>(i)};
+        }
+        sortByMortonKey(keyed);
+        original.resize(static_cast<std::size_t>(n));
+        copy.resize(n, 3);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+        for (Eigen::Index j = 0; j < n; ++j) {
+            keys[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].first;
+            original[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].second;
+            copy.row(j) = P.row(keyed[static_cast<std::size_t>(j)].second);
+        }
+    }
+    const PointMatrix& Q = sorted ? P : copy;
+    const auto rowOf = [&](Eigen::Index j) {
+        return sorted ? static_cast<int>(j) : original[static_cast<std::size_t>(j)];
+    };
+
+    releaseIdleThreads(); // the level and the cells' hash table are serial
+    // The level: the finest whose cells hold the wanted mean number of points. Consecutive
+    // keys first differ at bit b: a new cell starts there on every level up to b / 3.
+    std::vector<long> newCells(mortonBitsPerAxis + 1, 0);
+    for (std::size_t j = 1; j < keys.size(); ++j) {
+        const std::uint64_t differ = keys[j] ^ keys[j - 1];
+        if (differ != 0) {
+            ++newCells[static_cast<std::size_t>((63 - __builtin_clzll(differ)) / 3)];
+        }
+    }
+    int level = 1;
+    for (long cells = 1 + std::accumulate(newCells.begin() + 1, newCells.end(), 0L);
+         level < mortonBitsPerAxis &&
+         double(n) < pointsPerCellPerNeighbour * (k + 1) * double(cells);
+         ++level) {
+        cells -= newCells[static_cast<std::size_t>(level)];
+    }
+    const Cells cells(keys, level);
+    // Each cell is cut into 8 sub-cells (one level finer), the unit of the scan: a query looks
+    // at the sub-cells its search box overlaps among the 6 x 6 x 6 of the 27 cells around its
+    // own.
+    constexpr int width = 6;
+    const int subLevel = level - 1;
+    const double subSteps = double(std::uint64_t(1) << subLevel);
+    const std::int64_t lastCell = (std::int64_t(1) << (mortonBitsPerAxis - level)) - 1;
+    const std::int64_t lastSub = (std::int64_t(1) << (mortonBitsPerAxis - subLevel)) - 1;
+    // Margins for rounding in steps: positions are exact to about 1e-9 step.
+    constexpr double stepMargin = 1e-3;
+    const double oneStep = 1.0 / grid.scale;
+
+    // Exact for any query, at any level from `level` up: the points of the 27 cells around the
+    // query's cell, when the k-th nearest among them is closer than the block's faces;
+    // otherwise the next level. The top level's block is the whole cloud.
+    const auto searchWide = [&](Eigen::Index j, Candidates& c, std::vector<double>& scratch) {
+        double u[3];
+        std::int64_t q[3];
+        for (int d = 0; d < 3; ++d) {
+            u[d] = grid.steps(Q(j, d), d);
+            q[d] = static_cast<std::int64_t>(u[d]);
+        }
+        for (int l = level;; ++l) {
+            const std::int64_t top = (std::int64_t(1) << (mortonBitsPerAxis - l)) - 1;
+            std::int64_t cc[3];
+            for (int d = 0; d < 3; ++d) {
+                cc[d] = q[d] >> l;
+            }
+            std::size_t count = 0;
+            for (int dz = -1; dz <= 1; ++dz) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                        if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
+                            continue;
+                        }
+                        const std::uint64_t code =
+                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z));
+                        const auto from =
+                            std::lower_bound(keys.begin(), keys.end(), code << (3 * l));
+                        const auto to = std::lower_bound(from, keys.end(), (code + 1) << (3 * l));
+                        for (auto at = from; at != to; ++at) {
+                            const Eigen::Index r = at - keys.begin();
+                            if (r == j) {
+                                continue;
+                            }
+                            c.reserve(count + 1);
+                            c.distance[count] = (Q.row(r) - Q.row(j)).squaredNorm();
+                            c.index[count] = rowOf(r);
+                            ++count;
+                        }
+                    }
+                }
+            }
+            if (count < static_cast<std::size_t>(k)) {
+                continue;
+            }
+            scratch.assign(c.distance.begin(), c.distance.begin() + count);
+            std::nth_element(scratch.begin(), scratch.begin() + (k - 1), scratch.end());
+            const double kth = scratch[static_cast<std::size_t>(k - 1)];
+            // Every point within the k-th distance lies in the block.
+            const double reach = std::sqrt(kth) * grid.scale * (1.0 + 1e-9) + stepMargin;
+            bool inside = true;
+            for (int d = 0; d < 3; ++d) {
+                inside = inside &&
+                         (cc[d] == 0 || std::floor(u[d] - reach) >= double((cc[d] - 1) << l)) &&
+                         (cc[d] == top || std::floor(u[d] + reach) < double((cc[d] + 2) << l));
+            }
+            if (!inside) {
+                continue;
+            }
+            std::size_t kept = 0;
+            for (std::size_t a = 0; a < count; ++a) {
+                c.distance[kept] = c.distance[a];
+                c.index[kept] = c.index[a];
+                kept += c.distance[a] <= kth;
+            }
+            storeNearest(c, kept, k, &result.indices(rowOf(j), 0),
+                         &result.squaredDistances(rowOf(j), 0));
+            return kth;
+        }
+    };
+
+#pragma omp parallel num_threads(threads)
+    {
+        struct Run
+        {
+            int first = 0, end = 0;
+        };
+        std::vector<Run> table(width * width * width);
+        Candidates candidates;
+        std::vector<double> scratch;
+        double guess = 0.0;
+#pragma omp for schedule(dynamic, 16)
+        for (long cell = 0; cell < cells.count(); ++cell) {
+            // The runs of rows of the sub-cells of the 27 cells around this one.
+            std::int64_t cc[3];
+            for (int d = 0; d < 3; ++d) {
+                cc[d] = static_cast<std::int64_t>(grid.steps(Q(cells.first(cell), d), d)) >> level;
+            }
+            std::fill(table.begin(), table.end(), Run{});
+            std::size_t blockPoints = 0;
+            for (int dz = -1; dz <= 1; ++dz) {
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                        if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell ||
+                            z > lastCell) {
+                            continue;
+                        }
+                        const int other = cells.find(
+                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
+                        if (other < 0) {
+                            continue;
+                        }
+                        const int end = cells.end(other);
+                        blockPoints += static_cast<std::size_t>(end - cells.first(other));
+                        for (int first = cells.first(other); first < end;) {
+                            // The sub-cell: the key's three bits below the cell's.
+                            const unsigned sub = unsigned(keys[first] >> (3 * subLevel)) & 7u;
+                            int last = first + 1;
+                            while (last < end &&
+                                   (unsigned(keys[last] >> (3 * subLevel)) & 7u) == sub) {
+                                ++last;
+                            }
+                            const int X = 2 * (dx + 1) + int(sub & 1u);
+                            const int Y = 2 * (dy + 1) + int((sub >> 1) & 1u);
+                            const int Z = 2 * (dz + 1) + int(sub >> 2);
+                            table[static_cast<std::size_t>((Z * width + Y) * width + X)] = {first,
+                                                                                            last};
+                            first = last;
+                        }
+                    }
+                }
+            }
+            candidates.reserve(blockPoints);
+            const std::int64_t origin[3] = {2 * (cc[0] - 1), 2 * (cc[1] - 1), 2 * (cc[2] - 1)};
+            if (!(guess > 0.0)) {
+                guess = 0.5 * subSteps * oneStep;
+            }
+            for (int j = cells.first(cell); j < cells.end(cell); ++j) {
+                double u[3];
+                for (int d = 0; d < 3; ++d) {
+                    u[d] = grid.steps(Q(j, d), d);
+                }
+                // The k nearest lie within R of the query when at least k points do: every point
+                // within R is in the sub-cells the box [q - R, q + R] overlaps. R starts from the
+                // guess and grows while fewer than k are found and the box stays in the table.
+                bool found = false;
+                for (double R = std::max(guess, oneStep);;) {
+                    const double reach = R * grid.scale * (1.0 + 1e-9) + stepMargin;
+                    int lo[3], hi[3];
+                    bool inside = true;
+                    for (int d = 0; d < 3; ++d) {
+                        // Sub-cells outside the grid hold no point.
+                        const std::int64_t a = std::max<std::int64_t>(
+                            0, static_cast<std::int64_t>(std::floor((u[d] - reach) / subSteps)));
+                        const std::int64_t b = std::min<std::int64_t>(
+                            lastSub,
+                            static_cast<std::int64_t>(std::floor((u[d] + reach) / subSteps)));
+                        lo[d] = static_cast<int>(a - origin[d]);
+                        hi[d] = static_cast<int>(b - origin[d]);
+                        inside = inside && lo[d] >= 0 && hi[d] < width;
+                    }
+                    if (!inside) {
+                        break;
+                    }
+                    const double R2 = R * R;
+                    std::size_t count = 0;
+                    for (int Z = lo[2]; Z <= hi[2]; ++Z) {
+                        for (int Y = lo[1]; Y <= hi[1]; ++Y) {
+                            for (int X = lo[0]; X <= hi[0]; ++X) {
+                                const Run run =
+                                    table[static_cast<std::size_t>((Z * width + Y) * width + X)];
+                                for (int r = run.first; r < run.end; ++r) { // branch-free
+                                    const double d2 = (Q.row(r) - Q.row(j)).squaredNorm();
+                                    candidates.distance[count] = d2;
+                                    candidates.index[count] = r;
+                                    count += (d2 <= R2) & (r != j);
+                                }
+                            }
+                        }
+                    }
+                    if (count >= static_cast<std::size_t>(k)) {
+                        if (!sorted) {
+                            for (std::size_t a = 0; a < count; ++a) {
+                                candidates.index[a] =
+                                    original[static_cast<std::size_t>(candidates.index[a])];
+                            }
+                        }
+                        const int i = rowOf(j);
+                        storeNearest(candidates, count, k, &result.indices(i, 0),
+                                     &result.squaredDistances(i, 0));
+                        guess = radiusGuess * std::sqrt(result.squaredDistances(i, k - 1));
+                        found = true;
+                        break;
+                    }
+                    // About (count + 1) / R^2 points per area: aim at k + 1 with a margin.
+                    R *= std::max(1.25, 1.1 * std::sqrt((k + 1.0) / (count + 1.0)));
+                }
+                if (!found) {
+                    guess = radiusGuess * std::sqrt(searchWide(j, candidates, scratch));
+                }
+            }
+        }
+    }
+    return result;
+}
+
+double meanSpacing(const Neighbourhoods& neighbourhoods)
+{
+    const Eigen::Index n = neighbourhoods.size();
+    double sum = 0.0;
+    Eigen::Index counted = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        for (int j = 0; j < neighbourhoods.k(); ++j) {
+            const double d2 = neighbourhoods.squaredDistances(i, j);
+            if (d2 > 0.0) {
+                sum += std::sqrt(d2);
+                ++counted;
+                break;
+            }
+        }
+    }
+    if (counted == 0) {
+        throw std::invalid_argument("mean point spacing: every point coincides with its "
+                                    "neighbours, the cloud has no extent");
+    }
+    return sum / static_cast<double>(counted);
+}
+
+} // namespace featurelines

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Normals by principal component analysis of each point's k nearest neighbours.
+#pragma once
+
+#include <vector>
+
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+
+namespace featurelines {
+
+struct NormalOptions
+{
+    /// Neighbours used per point, at most Neighbourhoods::k() (0: all of them).
+    int k = 0;
+    int threads = 0;
+};
+
+struct NormalEstimate
+{
+    /// N  #P by 3 unit normals: the eigenvector of the smallest eigenvalue of the covariance of
+    /// the point and its neighbours. Unoriented (the sign is arbitrary but deterministic).
+    NormalMatrix normals;
+    /// V  #P surface variation lambda0 / (lambda0 + lambda1 + lambda2) (Pauly et al.), 0 on a
+    /// plane, up to 1/3 for isotropic scatter.
+    Eigen::VectorXd variation;
+};
+
+/// PCA normals of P over the neighbourhoods N.
+NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
+                          const NormalOptions& options = {});
+
+/// The same normals for the listed rows of P only, written into `normals` (#P by 3); the other
+/// rows are left as they are. For a sub-cloud whose neighbourhoods are those of its cloud
+/// except where its border cuts them: the other rows keep the cloud's normals.
+void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::vector<int>& rows,
+                      NormalMatrix& normals, const NormalOptions& options = {});
+
+/// The mean and covariance of a cloud's rows.
+struct Moments
+{
+    Eigen::RowVector3d mean;
+    Eigen::Matrix3d covariance;
+};
+
+/// The mean and covariance of the rows of P taken `stride` apart (#P >= 1): first and second
+/// moments about the first row (far from the origin, moments about the origin would lose
+/// their digits), summed in blocks of fixed size on the threads and then block by block, so
+/// the same at any number of threads. The cloud-wide checks (a line, a strip, a plane) read
+/// its eigenvalues and eigenvectors.
+Moments momentsOf(const PointMatrix& P, Eigen::Index stride = 1);
+
+/// momentsOf(P, stride).covariance.
+Eigen::Matrix3d covarianceOf(const PointMatrix& P, Eigen::Index stride = 1);
+
+} // namespace featurelines

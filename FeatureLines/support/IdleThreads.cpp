@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "FeatureLines/support/IdleThreads.h"
+
+#include <omp.h>
+
+namespace featurelines {
+
+void releaseIdleThreads()
+{
+    // OpenMP 5.0; inside a parallel region it fails without effect.
+    omp_pause_resource_all(omp_pause_soft);
+}
+
+} // namespace featurelines
