@@ -347,15 +347,21 @@ std::vector<Placement> placeNodes(const CreasePlacementInput& in, const SharpEdg
     return placement;
 }
 
-/// Around junction j (node v), within `reach`: the nodes of its boundary lines and v itself
-/// (`rimNodes`), and the sum of the directions from its sharp lines' nodes to it (`outwards`).
-void rimAroundJunction(const ClusterGraph& graph, std::size_t j, double reach,
-                       std::vector<int>& rimNodes, Eigen::Vector3d& outwards)
+/// Around a junction, within a reach: the nodes of its boundary lines and its own node (the
+/// junction may be a boundary node itself), and the sum of the directions from its sharp
+/// lines' nodes to it.
+struct JunctionRim
+{
+    std::vector<int> rimNodes;
+    Eigen::Vector3d outwards = Eigen::Vector3d::Zero();
+};
+
+JunctionRim rimAroundJunction(const ClusterGraph& graph, std::size_t j, double reach)
 {
     const int v = graph.junctionNodes[j];
     const Eigen::Vector3d centre = graph.nodes.row(v).transpose();
-    outwards = Eigen::Vector3d::Zero();
-    rimNodes = {v}; // the junction may be a boundary node itself
+    JunctionRim rim;
+    rim.rimNodes = {v};
     for (std::size_t l = 0; l < graph.lineNodes.size(); ++l) {
         const std::vector<int>& nodes = graph.lineNodes[l];
         const Polyline& line = graph.network.lines[l];
@@ -372,13 +378,14 @@ void rimAroundJunction(const ClusterGraph& graph, std::size_t j, double reach,
                     break;
                 }
                 if (line.label == boundaryLineLabel) {
-                    rimNodes.push_back(u);
+                    rim.rimNodes.push_back(u);
                 } else {
-                    outwards += centre - graph.nodes.row(u).transpose();
+                    rim.outwards += centre - graph.nodes.row(u).transpose();
                 }
             }
         }
     }
+    return rim;
 }
 
 /// Where a sharp line meets the boundary, the junction node is often a sharp node a few
@@ -391,20 +398,18 @@ void slideJunctionsToRim(const CreasePlacementInput& in, const SharpEdgeOptions&
     const ClusterGraph& graph = in.graph;
     const double spacing = in.spacing;
     const double reach = options.fitRadius * spacing;
-    std::vector<int> rimNodes;
-    Eigen::Vector3d outwards;
     for (std::size_t j = 0; j < graph.junctionNodes.size(); ++j) {
         Placement& p = placement[graph.junctionNodes[j]];
         if (p.kind != Placement::Line) {
             continue;
         }
-        rimAroundJunction(graph, j, reach, rimNodes, outwards);
-        if (rimNodes.size() == 1 || outwards.norm() <= 0.0) {
+        const JunctionRim rim = rimAroundJunction(graph, j, reach);
+        if (rim.rimNodes.size() == 1 || rim.outwards.norm() <= 0.0) {
             continue;
         }
-        const Eigen::Vector3d d = p.direction.dot(outwards) >= 0.0 ? p.direction : -p.direction;
+        const Eigen::Vector3d d = p.direction.dot(rim.outwards) >= 0.0 ? p.direction : -p.direction;
         double farthest = -std::numeric_limits<double>::infinity();
-        for (int u : rimNodes) {
+        for (int u : rim.rimNodes) {
             for (int i : nodePoints[u]) {
                 const Eigen::Vector3d x = in.P.row(i).transpose() - p.point;
                 const double t = x.dot(d);

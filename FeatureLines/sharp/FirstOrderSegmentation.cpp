@@ -502,12 +502,11 @@ std::vector<int> joinStoppedPoints(const SegmentationInput& in, const std::vecto
                                    const std::vector<int>& root,
                                    const FirstOrderSegmentation& result)
 {
-    const FirstOrderSegmentationOptions& options = in.options;
     const Neighbourhoods& N = in.N;
     const Eigen::Index n = in.P.rows();
     const int k = N.k();
-    const double cosJoin = cosOfDegrees(options.joinAngle);
-    const bool shallowCreases = options.shallowCreaseAngle > 0.0;
+    const double cosJoin = cosOfDegrees(in.options.joinAngle);
+    const bool shallowCreases = in.options.shallowCreaseAngle > 0.0;
     // A point that cannot grow joins the cluster of the growing neighbour whose normal is
     // closest to its own (the nearest such neighbour on a tie), unless its neighbours hold
     // growing points of two clusters that can be surface patches (at least k + 1 growing
@@ -524,14 +523,14 @@ std::vector<int> joinStoppedPoints(const SegmentationInput& in, const std::vecto
                                                  grows,
                                                  result.face,
                                                  cosJoin,
-                                                 cosOfDegrees(options.shallowCreaseAngle),
-                                                 std::sin(options.joinAngle * pi / 180.0),
-                                                 options.creasePlaneTolerance * in.spacing,
-                                                 options.creaseLineReach * in.spacing,
-                                                 options.minFacePoints};
+                                                 cosOfDegrees(in.options.shallowCreaseAngle),
+                                                 std::sin(in.options.joinAngle * pi / 180.0),
+                                                 in.options.creasePlaneTolerance * in.spacing,
+                                                 in.options.creaseLineReach * in.spacing,
+                                                 in.options.minFacePoints};
 
     std::vector<int> owner(n, -1);
-#pragma omp parallel num_threads(threadCount(options.threads))
+#pragma omp parallel num_threads(threadCount(in.options.threads))
     {
         ShallowCreaseTest onShallowCrease(creaseInputs);
 #pragma omp for schedule(static, 4096)

@@ -90,14 +90,20 @@ double largestDistanceFrom(const Polyline& line, double y, double z)
     return largest;
 }
 
+/// The network placeOnCreases makes of a line of `label` through nodes at (y, z) on the L.
+LineNetwork placedLineOfNodes(double y, double z, int label, const SharpEdgeOptions& options = {})
+{
+    const LShape shape = lShape();
+    const Neighbourhoods N = nearestNeighbours(shape.P);
+    const ClusterGraph graph = lineOfNodes(shape, y, z, label);
+    return placeOnCreases({shape.P, N, graph, shape.sharp, 1.0}, options);
+}
+
 } // namespace
 
 TEST(CreasePlacement, SharpLineOffTheCreaseEndsOnIt)
 {
-    const LShape shape = lShape();
-    const Neighbourhoods N = nearestNeighbours(shape.P);
-    const ClusterGraph graph = lineOfNodes(shape, -0.6, 0.6, sharpLineLabel);
-    const LineNetwork network = placeOnCreases({shape.P, N, graph, shape.sharp, 1.0}, {});
+    const LineNetwork network = placedLineOfNodes(-0.6, 0.6, sharpLineLabel);
     ASSERT_EQ(network.lines.size(), 1u);
     const Polyline& line = network.lines[0];
     EXPECT_LT(largestDistanceFrom(line, 0.0, 0.0), 1e-6);
@@ -109,24 +115,19 @@ TEST(CreasePlacement, SharpLineOffTheCreaseEndsOnIt)
 
 TEST(CreasePlacement, NodesFartherThanTheLargestShiftStay)
 {
-    const LShape shape = lShape();
-    const Neighbourhoods N = nearestNeighbours(shape.P);
     // 3 spacings from the crease: beyond maxCreaseShift (2.5).
-    const ClusterGraph graph = lineOfNodes(shape, -2.1, 2.1, sharpLineLabel);
-    const LineNetwork network = placeOnCreases({shape.P, N, graph, shape.sharp, 1.0}, {});
+    const LineNetwork network = placedLineOfNodes(-2.1, 2.1, sharpLineLabel);
     ASSERT_EQ(network.lines.size(), 1u);
     EXPECT_LT(largestDistanceFrom(network.lines[0], -2.1, 2.1), 1e-9);
 }
 
 TEST(CreasePlacement, LinesOfOtherLabelsKeepTheirNodes)
 {
-    const LShape shape = lShape();
-    const Neighbourhoods N = nearestNeighbours(shape.P);
-    const ClusterGraph graph = lineOfNodes(shape, -0.6, 0.6, boundaryLineLabel);
     SharpEdgeOptions options;
     options.graph.smoothingLength = 0.0;
     options.graph.resampleSpacing = 0.0;
-    const LineNetwork network = placeOnCreases({shape.P, N, graph, shape.sharp, 1.0}, options);
+    const LineNetwork network = placedLineOfNodes(-0.6, 0.6, boundaryLineLabel, options);
     ASSERT_EQ(network.lines.size(), 1u);
-    EXPECT_TRUE(network.lines[0].points.isApprox(graph.nodes));
+    EXPECT_TRUE(network.lines[0].points.isApprox(
+        lineOfNodes(lShape(), -0.6, 0.6, boundaryLineLabel).nodes));
 }
