@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+// The boundary: points with a wide empty sector around them, chained by the cluster graph.
 #include "FeatureLines/boundary/Boundary.h"
 
 #include <algorithm>
@@ -39,10 +40,8 @@ int octant(double x, double y)
     return (y >= 0.0 ? 4 : 0) | (x > 0.0 ? 2 : 0) | (std::abs(x) > std::abs(y) ? 1 : 0);
 }
 
-} // namespace
-
-std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& normals,
-                                 const Neighbourhoods& N, const BoundaryOptions& options)
+void requireValidInput(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                       const BoundaryOptions& options)
 {
     const Eigen::Index n = P.rows();
     if (normals.rows() != n || N.size() != n) {
@@ -56,74 +55,118 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
             "boundary: the gap angle must be between 0 and 360 degrees, not " +
             std::to_string(options.minGapAngle));
     }
+}
+
+/// A point's neighbours seen from it in its tangent plane: their directions (xs, ys), those
+/// not coinciding with the point (count), and which of the eight 45 degree sectors from +x
+/// (sectors) and of the eight turned by 22.5 degrees (turned) they occupy.
+struct TangentView
+{
+    explicit TangentView(int k) : xs(k), ys(k), order(k) {}
+
+    std::vector<double> xs, ys;
+    std::vector<std::pair<double, int>> order; // room for sorting the directions by angle
+    double tiny = 0.0;                         // shorter directions coincide with the point
+    int count = 0;
+    unsigned sectors = 0;
+    unsigned turned = 0;
+};
+
+/// The view of point i's neighbours from point i.
+void viewFromPoint(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                   Eigen::Index i, TangentView& view)
+{
     const int k = N.k();
+    const double cos22 = std::cos(pi / 8.0), sin22 = std::sin(pi / 8.0);
+    std::vector<double>& xs = view.xs;
+    std::vector<double>& ys = view.ys;
+    // A frame of the tangent plane.
+    const Eigen::Vector3d normal = normals.row(i).transpose();
+    const Eigen::Vector3d helper =
+        std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d u = normal.cross(helper).normalized();
+    const Eigen::Vector3d v = normal.cross(u);
+    const double tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
+    const double* p = P.data() + 3 * i;
+    int count = 0;
+    unsigned sectors = 0;
+    unsigned turned = 0;
+    for (int j = 0; j < k; ++j) {
+        const double* q = P.data() + 3 * static_cast<Eigen::Index>(N.indices(i, j));
+        const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+        xs[j] = dx * u.x() + dy * u.y() + dz * u.z();
+        ys[j] = dx * v.x() + dy * v.y() + dz * v.z();
+        if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
+            sectors |= 1u << octant(xs[j], ys[j]);
+            turned |= 1u << octant(cos22 * xs[j] + sin22 * ys[j], cos22 * ys[j] - sin22 * xs[j]);
+            ++count;
+        }
+    }
+    view.tiny = tiny;
+    view.count = count;
+    view.sectors = sectors;
+    view.turned = turned;
+}
+
+/// The directions of the view, ordered by angle, leave a gap wider than minGap (radians)
+/// between consecutive ones; cosines are compared instead of angles.
+bool hasGapWiderThan(TangentView& view, double minGap, double cosMinGap)
+{
+    const std::vector<double>& xs = view.xs;
+    const std::vector<double>& ys = view.ys;
+    std::vector<std::pair<double, int>>& order = view.order;
+    const int k = static_cast<int>(xs.size());
+    int count = 0;
+    for (int j = 0; j < k; ++j) {
+        if (std::abs(xs[j]) + std::abs(ys[j]) > view.tiny) {
+            order[count++] = {pseudoAngle(xs[j], ys[j]), j};
+        }
+    }
+    std::sort(order.begin(), order.begin() + count);
+    bool wide = count == 1;
+    for (int a = 0; a < count && !wide; ++a) {
+        const int from = order[a].second;
+        const int to = order[(a + 1) % count].second;
+        const double dot = xs[from] * xs[to] + ys[from] * ys[to];
+        const double cross = xs[from] * ys[to] - ys[from] * xs[to];
+        const double cosine = dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
+                                              (xs[to] * xs[to] + ys[to] * ys[to]));
+        if (cross > 0.0) {
+            // The gap is below 180 degrees: acos(cosine).
+            wide = minGap < pi && cosine < cosMinGap;
+        } else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
+            // At least 180 degrees: 2 pi - acos(cosine) (all the circle when the last
+            // direction comes back onto the first).
+            wide = minGap <= pi || cosine > cosMinGap;
+        }
+    }
+    return wide;
+}
+
+} // namespace
+
+std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& normals,
+                                 const Neighbourhoods& N, const BoundaryOptions& options)
+{
+    requireValidInput(P, normals, N, options);
+    const Eigen::Index n = P.rows();
     const double minGap = options.minGapAngle * pi / 180.0;
     const double cosMinGap = std::cos(minGap);
-    const double cos22 = std::cos(pi / 8.0), sin22 = std::sin(pi / 8.0);
     std::vector<char> boundary(n, 0);
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        std::vector<double> xs(k), ys(k);
-        std::vector<std::pair<double, int>> order(k);
+        TangentView view(N.k());
 #pragma omp for schedule(static, 4096)
         for (Eigen::Index i = 0; i < n; ++i) {
-            // A frame of the tangent plane.
-            const Eigen::Vector3d normal = normals.row(i).transpose();
-            const Eigen::Vector3d helper =
-                std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-            const Eigen::Vector3d u = normal.cross(helper).normalized();
-            const Eigen::Vector3d v = normal.cross(u);
-            const double tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
-            const double* p = P.data() + 3 * i;
-            int count = 0;
-            unsigned sectors = 0;
-            unsigned turned = 0;
-            for (int j = 0; j < k; ++j) {
-                const double* q = P.data() + 3 * static_cast<Eigen::Index>(N.indices(i, j));
-                const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-                xs[j] = dx * u.x() + dy * u.y() + dz * u.z();
-                ys[j] = dx * v.x() + dy * v.y() + dz * v.z();
-                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
-                    sectors |= 1u << octant(xs[j], ys[j]);
-                    turned |=
-                        1u << octant(cos22 * xs[j] + sin22 * ys[j], cos22 * ys[j] - sin22 * xs[j]);
-                    ++count;
-                }
-            }
+            viewFromPoint(P, normals, N, i, view);
             // A gap wider than 90 degrees contains a whole 45 degree sector, of the eight from
             // +x and of the eight turned by 22.5 degrees: with all eight occupied in either
             // there is none, and no angle needs computing (most points).
-            if (count == 0 ||
-                ((sectors == 0xFF || turned == 0xFF) && options.minGapAngle >= 90.0)) {
+            if (view.count == 0 ||
+                ((view.sectors == 0xFF || view.turned == 0xFF) && options.minGapAngle >= 90.0)) {
                 continue;
             }
-            // Otherwise order the directions by angle and look for a gap wider than the
-            // limit between consecutive ones, comparing cosines instead of angles.
-            count = 0;
-            for (int j = 0; j < k; ++j) {
-                if (std::abs(xs[j]) + std::abs(ys[j]) > tiny) {
-                    order[count++] = {pseudoAngle(xs[j], ys[j]), j};
-                }
-            }
-            std::sort(order.begin(), order.begin() + count);
-            bool wide = count == 1;
-            for (int a = 0; a < count && !wide; ++a) {
-                const int from = order[a].second;
-                const int to = order[(a + 1) % count].second;
-                const double dot = xs[from] * xs[to] + ys[from] * ys[to];
-                const double cross = xs[from] * ys[to] - ys[from] * xs[to];
-                const double cosine = dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
-                                                      (xs[to] * xs[to] + ys[to] * ys[to]));
-                if (cross > 0.0) {
-                    // The gap is below 180 degrees: acos(cosine).
-                    wide = minGap < pi && cosine < cosMinGap;
-                } else if (cross < 0.0 || cosine < 0.0 || a + 1 == count) {
-                    // At least 180 degrees: 2 pi - acos(cosine) (all the circle when the last
-                    // direction comes back onto the first).
-                    wide = minGap <= pi || cosine > cosMinGap;
-                }
-            }
-            boundary[i] = wide ? 1 : 0;
+            boundary[i] = hasGapWiderThan(view, minGap, cosMinGap) ? 1 : 0;
         }
     }
     return boundary;

@@ -1,8 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The external boundary of an open cloud (a sheet, a scan of one side of a part). The 2008
-// paper extracts it and includes it in the graph so that the sharp lines and the boundary
-// together enclose the smooth regions (Sec. 1.2, Fig. 1 "c = external boundary"; Sec. 4).
-// How boundary points are found is designed here: the paper does not say.
+// The external boundary of an open cloud: boundary points, chained into lines by the graph.
 #pragma once
 
 #include <vector>
@@ -11,24 +8,15 @@
 
 namespace featurelines {
 
+/// Design note: docs/design/boundary.md (Sec. 1.2 and 4 of the 2008 paper; the test is ours).
 struct BoundaryOptions
 {
-    /// Degrees. A point is on the boundary when, seen from the point in its tangent plane,
-    /// its k neighbours leave an empty sector wider than this. On a straight border the gap is
-    /// ~180 degrees, at a convex corner more, and one row in from the border the border row
-    /// itself fills the view (gap ~45). Inside a cloud the widest gap between 16 neighbours
-    /// depends on how regular the sampling is: 30-60 degrees on a blue-noise or scan-line
-    /// sampling, but on an irregular one (a thinned or merged scan, independent uniform
-    /// points) it passes 90 degrees at about a fifth of the points (16 directions at random:
-    /// 16 (3/4)^15 = 0.21) and 120 degrees at 4 % (16 (2/3)^15), scattered, too few to chain
-    /// into lines. 90 made a 70 % random thinning of the benchmark parts grow false boundary
-    /// lines on every closed part; 120 keeps them closed and finds the open sheet's border as
-    /// before (docs/ACCURACY.md).
+    /// Degrees: a point is on the boundary when its k neighbours leave an empty sector wider
+    /// than this in its tangent plane, in (0, 360) (120).
     double minGapAngle = 120.0;
-    /// The chaining of boundary points into lines (each boundary point is one candidate
-    /// cluster). The defaults of ClusterGraphOptions suit a band one or two points wide.
+    /// The chaining of boundary points into lines (ClusterGraphOptions' defaults).
     ClusterGraphOptions graph;
-    /// Worker threads (0: OpenMP's default).
+    /// Worker threads; 0: OpenMP's default (0).
     int threads = 0;
 };
 
