@@ -3,16 +3,9 @@
 
 #include "ExtractionFeature.h"
 
-#include <BRepBuilderAPI_MakePolygon.hxx>
-#include <BRep_Builder.hxx>
-#include <Precision.hxx>
-#include <TopoDS_Compound.hxx>
-#include <gp_Pnt.hxx>
-
 #include <Base/Exception.h>
 #include <Mod/Points/App/PointsFeature.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -24,7 +17,6 @@
 using namespace FeatureLines;
 
 using featurelines::ExtractionResult;
-using featurelines::LineType;
 using featurelines::PointMatrix;
 
 namespace {
@@ -119,6 +111,91 @@ std::string formatValue(double v)
     return s.str();
 }
 
+/// Why execute() stops: the message the user reads.
+struct ExecError
+{
+    std::string message;
+};
+
+/// The Source, checked to be a point cloud.
+const Points::Feature& sourceCloud(const App::DocumentObject* source)
+{
+    if (!source) {
+        throw ExecError{
+            "No point cloud: set Source to a Points object (File > Import an .xyz, .asc, .ply "
+            "or .pcd file)."};
+    }
+    if (!source->isDerivedFrom(Points::Feature::getClassTypeId())) {
+        throw ExecError{"'" + labelOf(source) +
+                        "' is not a point cloud: Source must be a Points object, not a " +
+                        source->getTypeId().getName() + "."};
+    }
+    return *static_cast<const Points::Feature*>(source);
+}
+
+/// The core's options from the object's parameters, checked to extract something.
+featurelines::ExtractionOptions checkedOptions(const Extraction& extraction)
+{
+    featurelines::ExtractionOptions options;
+    try {
+        options = toExtractionOptions(extraction.parameterValues());
+    } catch (const std::invalid_argument& e) {
+        throw ExecError{e.what()};
+    }
+    if (!options.sharpEdges && !options.smoothEdges && !options.sharp.includeBoundary) {
+        throw ExecError{
+            "SharpEdges, SmoothEdges and BoundaryLines are all off: nothing to extract."};
+    }
+    return options;
+}
+
+/// Enough points for the neighbourhoods, and none invalid.
+void checkPoints(const Points::PointKernel& kernel, const std::string& label,
+                 const featurelines::ExtractionOptions& options)
+{
+    const size_t needed = static_cast<size_t>(options.neighbours.k) + 1;
+    if (kernel.size() < needed) {
+        throw ExecError{"Too few points: '" + label + "' has " + std::to_string(kernel.size()) +
+                        " points; at least " + std::to_string(needed) +
+                        " are needed for NeighbourCount = " + std::to_string(options.neighbours.k) +
+                        "."};
+    }
+    const size_t valid = kernel.countValid();
+    if (valid != kernel.size()) {
+        throw ExecError{"'" + label + "' has " + std::to_string(kernel.size() - valid) +
+                        " invalid (NaN) points; drop them first, e.g. in the Python console: "
+                        "cloud.Points = cloud.Points.fromValid()"};
+    }
+}
+
+/// The core's result for the cloud (through the cache), with progress and cancelling; a result
+/// without lines is an error.
+ExtractionResult extractLines(const Points::PointKernel& kernel, const std::string& label,
+                              featurelines::ExtractionOptions options)
+{
+    const PointMatrix P = kernelPoints(kernel);
+    ExtractionProgress progress("Feature lines of " + label);
+    options.progress = progress.callback();
+    ExtractionResult result;
+    try {
+        result = extractCached(P, hashCloud(P), options);
+    } catch (const featurelines::ExtractionCancelled&) {
+        throw ExecError{
+            "Feature line extraction cancelled by the user; the previous lines are kept."};
+    } catch (const std::invalid_argument& e) {
+        throw ExecError{"'" + label + "': " + e.what()};
+    }
+    if (result.lines.empty()) {
+        throw ExecError{
+            "No feature lines found in '" + label + "' (" + std::to_string(kernel.size()) +
+            " points, spacing " + formatValue(result.spacing) +
+            "): no crease turns beyond GrowAngle and no smooth region's curvature histogram has "
+            "a significant valley. Lower GrowAngle for shallow creases, or set ThresholdMode to "
+            "Explicit and give Thresholds."};
+    }
+    return result;
+}
+
 } // namespace
 
 PROPERTY_SOURCE(FeatureLines::Extraction, Part::Feature)
@@ -129,38 +206,10 @@ Extraction::Extraction()
                       "The point cloud: a Points object (File > Import an .xyz, .asc, .ply or "
                       ".pcd file).");
 
-    initParameter(NeighbourCount, "NeighbourCount");
-    initParameter(SharpEdges, "SharpEdges");
-    initParameter(BoundaryLines, "BoundaryLines");
-    initParameter(GrowAngle, "GrowAngle");
-    initParameter(JoinAngle, "JoinAngle");
-    initParameter(MinFilletRadius, "MinFilletRadius");
-    initParameter(CreaseFitRadius, "CreaseFitRadius");
-    initParameter(MinCreaseAngle, "MinCreaseAngle");
-    initParameter(BoundaryGapAngle, "BoundaryGapAngle");
-    initParameter(SmoothEdges, "SmoothEdges");
-    initParameter(BandWidth, "BandWidth");
-    initParameter(Smoothing, "Smoothing");
-    initParameter(SmoothingIterations, "SmoothingIterations");
-    initParameter(NoiseThreshold, "NoiseThreshold");
-    initParameter(SignedCurvature, "SignedCurvature");
-    initParameter(MaxCurvatureScale, "MaxCurvatureScale");
-    initParameter(PlaceCoarseLines, "PlaceCoarseLines");
-    initParameter(NodeRadius, "NodeRadius");
-    initParameter(ExtendedRadius, "ExtendedRadius");
-    initParameter(MaxEdgeLength, "MaxEdgeLength");
-    initParameter(MinBranchLength, "MinBranchLength");
-    initParameter(ReconnectRadius, "ReconnectRadius");
-    initParameter(ReconnectAngle, "ReconnectAngle");
-    initParameter(MinComponentLength, "MinComponentLength");
-    initParameter(ResampleSpacing, "ResampleSpacing");
-    initParameter(ThresholdMode, "ThresholdMode");
-    initParameter(HistogramBins, "HistogramBins");
-    initParameter(OutlierPercent, "OutlierPercent");
-    initParameter(MinPeakPercent, "MinPeakPercent");
-    initParameter(MaxThresholds, "MaxThresholds");
-    initParameter(MinValleyRatio, "MinValleyRatio");
-    initParameter(MinContrast, "MinContrast");
+    // The scalar parameters, one per row of ParameterTable.h, then the two lists.
+#define FEATURELINES_PARAMETER(name, ...) initParameter(name, #name);
+#include "ParameterTable.h"
+#undef FEATURELINES_PARAMETER
     _ADD_PROPERTY_TYPE(thresholdsName, Thresholds, (), "Thresholds", App::Prop_None, thresholdsDoc);
     _ADD_PROPERTY_TYPE(regionThresholdsName, RegionThresholds, (), "Thresholds", App::Prop_None,
                        regionThresholdsDoc);
@@ -280,75 +329,25 @@ void Extraction::setParameterValues(const ParameterValues& values)
 
 App::DocumentObjectExecReturn* Extraction::execute()
 {
-    App::DocumentObject* source = Source.getValue();
-    if (!source) {
-        return new App::DocumentObjectExecReturn(
-            "No point cloud: set Source to a Points object (File > Import an .xyz, .asc, .ply "
-            "or .pcd file).");
-    }
-    const std::string label = labelOf(source);
-    if (!source->isDerivedFrom(Points::Feature::getClassTypeId())) {
-        return new App::DocumentObjectExecReturn(
-            "'" + label + "' is not a point cloud: Source must be a Points object, not a " +
-            source->getTypeId().getName() + ".");
-    }
-    featurelines::ExtractionOptions options;
+    // Gathers the checked inputs, calls the core, sets the outputs; a check that fails or a run
+    // that ends without lines returns its message.
     try {
-        options = toExtractionOptions(parameterValues());
-    } catch (const std::invalid_argument& e) {
-        return new App::DocumentObjectExecReturn(e.what());
+        const Points::Feature& cloud = sourceCloud(Source.getValue());
+        const featurelines::ExtractionOptions options = checkedOptions(*this);
+        const Points::PointKernel& kernel = cloud.Points.getValue();
+        checkPoints(kernel, labelOf(&cloud), options);
+        const ExtractionResult result = extractLines(kernel, labelOf(&cloud), options);
+        setOutputs(toOutputs(result, kernel.getTransform()));
+    } catch (const ExecError& e) {
+        return new App::DocumentObjectExecReturn(e.message);
     }
-    if (!options.sharpEdges && !options.smoothEdges && !options.sharp.includeBoundary) {
-        return new App::DocumentObjectExecReturn(
-            "SharpEdges, SmoothEdges and BoundaryLines are all off: nothing to extract.");
-    }
-    const Points::PointKernel& kernel = static_cast<Points::Feature*>(source)->Points.getValue();
-    const size_t needed = static_cast<size_t>(options.neighbours.k) + 1;
-    if (kernel.size() < needed) {
-        return new App::DocumentObjectExecReturn(
-            "Too few points: '" + label + "' has " + std::to_string(kernel.size()) +
-            " points; at least " + std::to_string(needed) +
-            " are needed for NeighbourCount = " + std::to_string(options.neighbours.k) + ".");
-    }
-    const size_t valid = kernel.countValid();
-    if (valid != kernel.size()) {
-        return new App::DocumentObjectExecReturn(
-            "'" + label + "' has " + std::to_string(kernel.size() - valid) +
-            " invalid (NaN) points; drop them first, e.g. in the Python console: cloud.Points = "
-            "cloud.Points.fromValid()");
-    }
-
-    const PointMatrix P = kernelPoints(kernel);
-    ExtractionProgress progress("Feature lines of " + label);
-    options.progress = progress.callback();
-    ExtractionResult result;
-    try {
-        result = extractCached(P, hashCloud(P), options);
-    } catch (const featurelines::ExtractionCancelled&) {
-        return new App::DocumentObjectExecReturn(
-            "Feature line extraction cancelled by the user; the previous lines are kept.");
-    } catch (const std::invalid_argument& e) {
-        return new App::DocumentObjectExecReturn("'" + label + "': " + e.what());
-    }
-    if (result.lines.empty()) {
-        return new App::DocumentObjectExecReturn(
-            "No feature lines found in '" + label + "' (" + std::to_string(kernel.size()) +
-            " points, spacing " + formatValue(result.spacing) +
-            "): no crease turns beyond GrowAngle and no smooth region's curvature histogram has "
-            "a significant valley. Lower GrowAngle for shallow creases, or set ThresholdMode to "
-            "Explicit and give Thresholds.");
-    }
-    setOutputs(result, kernel.getTransform());
     return App::DocumentObject::StdReturn;
 }
 
-void Extraction::setOutputs(const ExtractionResult& r, const Base::Matrix4D& toWorld)
+void Extraction::setOutputs(const ExtractionOutputs& out)
 {
-    const LineWires w = makeWires(r, toWorld);
-    std::vector<TopoDS_Wire> all = w.sharp;
-    all.insert(all.end(), w.smooth.begin(), w.smooth.end());
-    all.insert(all.end(), w.boundary.begin(), w.boundary.end());
-    Shape.setValue(makeCompound(all));
+    const LineWires& w = out.wires;
+    Shape.setValue(makeCompoundOfAll(w));
 
     const Base::Matrix4D placement = Placement.getValue().toMatrix();
     auto placed = [&](const std::vector<TopoDS_Wire>& wires) {
@@ -366,38 +365,17 @@ void Extraction::setOutputs(const ExtractionResult& r, const Base::Matrix4D& toW
     SmoothLineRegions.setValues(w.smoothRegion);
     SmoothLineThresholds.setValues(w.smoothThreshold);
 
-    std::vector<Base::Vector3d> junctions;
-    for (Eigen::Index j = 0; j < r.junctions.rows(); ++j) {
-        junctions.push_back(
-            toWorld * Base::Vector3d(r.junctions(j, 0), r.junctions(j, 1), r.junctions(j, 2)));
-    }
-    Junctions.setValues(junctions);
-    Spacing.setValue(r.spacing);
+    Junctions.setValues(out.junctions);
+    Spacing.setValue(out.spacing);
+    UsedThresholds.setValues(out.usedThresholds);
+    UsedThresholdRegions.setValues(out.usedThresholdRegions);
 
-    std::vector<double> thresholds;
-    std::vector<long> thresholdRegions;
-    for (const featurelines::RegionReport& report : r.regions) {
-        for (double t : report.thresholds) {
-            thresholds.push_back(t);
-            thresholdRegions.push_back(report.region);
-        }
-    }
-    UsedThresholds.setValues(thresholds);
-    UsedThresholdRegions.setValues(thresholdRegions);
-
-    std::vector<long> region(r.region.begin(), r.region.end());
-    std::vector<long> patch(r.patch.begin(), r.patch.end());
-    std::vector<long> label(r.label.size());
-    for (size_t i = 0; i < label.size(); ++i) {
-        label[i] = r.label[i] == featurelines::PointLabel::Outside ? -1 : long(r.label[i]);
-    }
-    RegionCount.setValue(region.empty() ? 0 : *std::max_element(region.begin(), region.end()) + 1);
-    PatchCount.setValue(patch.empty() ? 0 : *std::max_element(patch.begin(), patch.end()) + 1);
-    PointRegion.setValues(region);
-    PointPatch.setValues(patch);
-    PointLabel.setValues(label);
-    PointCurvature.setValues(
-        std::vector<double>(r.curvature.data(), r.curvature.data() + r.curvature.size()));
+    RegionCount.setValue(out.regionCount);
+    PatchCount.setValue(out.patchCount);
+    PointRegion.setValues(out.region);
+    PointPatch.setValues(out.patch);
+    PointLabel.setValues(out.label);
+    PointCurvature.setValues(out.curvature);
 }
 
 void Extraction::onChanged(const App::Property* prop)
@@ -411,83 +389,3 @@ void Extraction::onChanged(const App::Property* prop)
     }
     Part::Feature::onChanged(prop);
 }
-
-namespace FeatureLines {
-
-PointMatrix kernelPoints(const Points::PointKernel& kernel)
-{
-    const auto& stored = kernel.getBasicPoints();
-    PointMatrix P(static_cast<Eigen::Index>(stored.size()), 3);
-    for (size_t i = 0; i < stored.size(); ++i) {
-        const auto row = static_cast<Eigen::Index>(i);
-        P(row, 0) = stored[i].x;
-        P(row, 1) = stored[i].y;
-        P(row, 2) = stored[i].z;
-    }
-    return P;
-}
-
-LineWires makeWires(const ExtractionResult& result, const Base::Matrix4D& toWorld)
-{
-    LineWires out;
-    for (const featurelines::FeatureLine& line : result.lines) {
-        // Vertices closer than OCCT's confusion tolerance would make degenerate edges.
-        std::vector<gp_Pnt> vertices;
-        for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
-            const Base::Vector3d p =
-                toWorld * Base::Vector3d(line.points(i, 0), line.points(i, 1), line.points(i, 2));
-            const gp_Pnt v(p.x, p.y, p.z);
-            if (vertices.empty() || v.Distance(vertices.back()) > Precision::Confusion()) {
-                vertices.push_back(v);
-            }
-        }
-        bool closed = line.closed;
-        while (closed && vertices.size() > 1 &&
-               vertices.back().Distance(vertices.front()) <= Precision::Confusion()) {
-            vertices.pop_back();
-        }
-        closed = closed && vertices.size() >= 3;
-        if (vertices.size() < 2) {
-            continue; // all vertices coincide: no wire
-        }
-        BRepBuilderAPI_MakePolygon polygon;
-        for (const gp_Pnt& v : vertices) {
-            polygon.Add(v);
-        }
-        if (closed) {
-            polygon.Close();
-        }
-        if (!polygon.IsDone()) {
-            continue;
-        }
-        const TopoDS_Wire wire = polygon.Wire();
-        out.closed += closed ? 1 : 0;
-        switch (line.type) {
-        case LineType::Sharp:
-            out.sharp.push_back(wire);
-            break;
-        case LineType::Smooth:
-            out.smooth.push_back(wire);
-            out.smoothRegion.push_back(line.region);
-            out.smoothThreshold.push_back(line.threshold);
-            break;
-        case LineType::Boundary:
-            out.boundary.push_back(wire);
-            break;
-        }
-    }
-    return out;
-}
-
-TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires)
-{
-    BRep_Builder builder;
-    TopoDS_Compound compound;
-    builder.MakeCompound(compound);
-    for (const TopoDS_Wire& wire : wires) {
-        builder.Add(compound, wire);
-    }
-    return compound;
-}
-
-} // namespace FeatureLines

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // FeatureLines::Extraction: the document object that turns a Points object into Part wires.
 // execute() gathers the source cloud and the properties, runs the core through the cache
-// (ExtractionCache.h) and sets the outputs; everything it needs to know about a parameter is in
-// ExtractionParameters.h.
+// (ExtractionCache.h) and sets the outputs (converted by ExtractionOutputs.h); everything it needs
+// to know about a parameter is in ExtractionParameters.h and its table, ParameterTable.h.
 #pragma once
 
 #include <App/PropertyGeo.h>
@@ -11,19 +11,41 @@
 #include <App/PropertyUnits.h>
 #include <Mod/Part/App/PartFeature.h>
 #include <Mod/Part/App/PropertyTopoShape.h>
-#include <TopoDS_Wire.hxx>
 
 #include <string>
-#include <vector>
 
+#include "ExtractionOutputs.h"
 #include "ExtractionParameters.h"
 #include "PropertyPointIndices.h"
 
-namespace Points {
-class PointKernel;
-}
-
 namespace FeatureLines {
+
+/// The property type of a parameter of each kind.
+template <ParameterKind kind> struct ParameterProperty;
+template <> struct ParameterProperty<ParameterKind::Integer>
+{
+    using type = App::PropertyIntegerConstraint;
+};
+template <> struct ParameterProperty<ParameterKind::Float>
+{
+    using type = App::PropertyFloatConstraint;
+};
+template <> struct ParameterProperty<ParameterKind::Spacing>
+{
+    using type = App::PropertyFloatConstraint;
+};
+template <> struct ParameterProperty<ParameterKind::Angle>
+{
+    using type = App::PropertyAngle;
+};
+template <> struct ParameterProperty<ParameterKind::Switch>
+{
+    using type = App::PropertyBool;
+};
+template <> struct ParameterProperty<ParameterKind::Choice>
+{
+    using type = App::PropertyEnumeration;
+};
 
 class Extraction : public Part::Feature
 {
@@ -35,43 +57,11 @@ public:
     /// The point cloud: a Points::Feature.
     App::PropertyLink Source;
 
-    // Neighbourhood
-    App::PropertyIntegerConstraint NeighbourCount;
-    // Sharp edges
-    App::PropertyBool SharpEdges;
-    App::PropertyBool BoundaryLines;
-    App::PropertyAngle GrowAngle;
-    App::PropertyAngle JoinAngle;
-    App::PropertyFloatConstraint MinFilletRadius;
-    App::PropertyFloatConstraint CreaseFitRadius;
-    App::PropertyAngle MinCreaseAngle;
-    App::PropertyAngle BoundaryGapAngle;
-    // Smooth edges
-    App::PropertyBool SmoothEdges;
-    App::PropertyFloatConstraint BandWidth;
-    App::PropertyEnumeration Smoothing;
-    App::PropertyIntegerConstraint SmoothingIterations;
-    App::PropertyFloatConstraint NoiseThreshold;
-    App::PropertyBool SignedCurvature;
-    App::PropertyFloatConstraint MaxCurvatureScale;
-    App::PropertyBool PlaceCoarseLines;
-    // Line graph
-    App::PropertyFloatConstraint NodeRadius;
-    App::PropertyFloatConstraint ExtendedRadius;
-    App::PropertyFloatConstraint MaxEdgeLength;
-    App::PropertyFloatConstraint MinBranchLength;
-    App::PropertyFloatConstraint ReconnectRadius;
-    App::PropertyAngle ReconnectAngle;
-    App::PropertyFloatConstraint MinComponentLength;
-    App::PropertyFloatConstraint ResampleSpacing;
-    // Thresholds
-    App::PropertyEnumeration ThresholdMode;
-    App::PropertyIntegerConstraint HistogramBins;
-    App::PropertyFloatConstraint OutlierPercent;
-    App::PropertyFloatConstraint MinPeakPercent;
-    App::PropertyIntegerConstraint MaxThresholds;
-    App::PropertyFloatConstraint MinValleyRatio;
-    App::PropertyFloatConstraint MinContrast;
+    /// The scalar parameters: one property per row of ParameterTable.h, named as the row.
+#define FEATURELINES_PARAMETER(name, kind, ...) ParameterProperty<ParameterKind::kind>::type name;
+#include "ParameterTable.h"
+#undef FEATURELINES_PARAMETER
+    /// The list parameters (ExtractionParameters.h).
     App::PropertyFloatList Thresholds;
     App::PropertyMap RegionThresholds;
 
@@ -117,23 +107,7 @@ protected:
 
 private:
     void initParameter(App::Property& property, const char* name);
-    void setOutputs(const featurelines::ExtractionResult& result, const Base::Matrix4D& toWorld);
+    void setOutputs(const ExtractionOutputs& outputs);
 };
-
-/// The source cloud's points in its own coordinates (the kernel's stored points) and the
-/// matrix to world coordinates (its placement).
-featurelines::PointMatrix kernelPoints(const Points::PointKernel& kernel);
-
-/// "sharp" wires etc. in world coordinates; lines whose vertices all coincide are skipped.
-struct LineWires
-{
-    std::vector<TopoDS_Wire> sharp, smooth, boundary;
-    /// Per smooth wire: the region and threshold of its line.
-    std::vector<long> smoothRegion;
-    std::vector<double> smoothThreshold;
-    int closed = 0;
-};
-LineWires makeWires(const featurelines::ExtractionResult& result, const Base::Matrix4D& toWorld);
-TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires);
 
 } // namespace FeatureLines

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The named parameters of a feature line extraction: one table that maps every name onto a field
-// of featurelines::ExtractionOptions. The document object's properties and the keyword arguments
-// of the Python functions both go through it, so a name means the same thing everywhere and the
-// defaults are the core's own (read from a default-constructed ExtractionOptions).
+// The named parameters of a feature line extraction: one table (ParameterTable.h, one row per
+// parameter) that maps every name onto a field of featurelines::ExtractionOptions. The document
+// object's properties and the keyword arguments of the Python functions both go through it, so a
+// name means the same thing everywhere and the defaults are the core's own (read from a
+// default-constructed ExtractionOptions).
 #pragma once
 
 #include <map>

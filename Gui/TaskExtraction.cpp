@@ -435,7 +435,7 @@ void TaskExtraction::adoptAnalysis()
     const featurelines::PointMatrix& P = input.points;
     worldPoints.reserve(static_cast<size_t>(P.rows()));
     for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        const Base::Vector3d w = input.toWorld * Base::Vector3d(P(i, 0), P(i, 1), P(i, 2));
+        const Base::Vector3d w = FeatureLines::worldPoint(input.toWorld, P, i);
         worldPoints.emplace_back(float(w.x), float(w.y), float(w.z));
     }
     const std::vector<featurelines::RegionGeometry>& geometry = analysis.regions->geometry;
@@ -854,24 +854,18 @@ void TaskExtraction::refreshStage()
                               .arg(accepted.join(QLatin1String(", "))));
 }
 
-void TaskExtraction::refreshPreview()
+std::vector<int> TaskExtraction::labelsPerInputPoint(const Region* r,
+                                                     const featurelines::RegionGeometry* g)
 {
-    Ui_TaskExtractionThresholds& t = *thresholdsUi;
     labelCounts.clear();
-    const auto mode = static_cast<PreviewMode>(t.comboPreview->currentIndex());
-    const Region* r = currentRegion();
-    const featurelines::RegionGeometry* g = currentGeometry();
-    // The label counts are shown with the candidate whatever the preview shows.
     std::vector<int> perInput(worldPoints.size(), -1);
     if (r && g && std::isfinite(focusThreshold(*r))) {
-        const std::vector<featurelines::PointLabel> labels =
-            FeatureLines::regionLabels(*g, focusThreshold(*r), input.options.smooth);
-        std::vector<int> values(labels.size());
+        const std::vector<int> values = FeatureLines::labelValues<int>(
+            FeatureLines::regionLabels(*g, focusThreshold(*r), input.options.smooth));
         labelCounts.assign(4, 0);
-        for (size_t i = 0; i < labels.size(); ++i) {
-            values[i] = labels[i] == featurelines::PointLabel::Outside ? -1 : int(labels[i]);
-            if (values[i] >= 0 && values[i] < 4) {
-                ++labelCounts[static_cast<size_t>(values[i])];
+        for (int value : values) {
+            if (value >= 0 && value < 4) {
+                ++labelCounts[static_cast<size_t>(value)];
             }
         }
         if (perInput.size() == analysis.geometry->inputToPoint.size()) {
@@ -882,6 +876,17 @@ void TaskExtraction::refreshPreview()
         FeatureLines::scatterToInputPoints(*analysis.geometry, *g,
                                            std::vector<int>(g->members.size(), 0), perInput);
     }
+    return perInput;
+}
+
+void TaskExtraction::refreshPreview()
+{
+    Ui_TaskExtractionThresholds& t = *thresholdsUi;
+    const auto mode = static_cast<PreviewMode>(t.comboPreview->currentIndex());
+    const Region* r = currentRegion();
+    const featurelines::RegionGeometry* g = currentGeometry();
+    // The label counts are shown with the candidate whatever the preview shows.
+    const std::vector<int> perInput = labelsPerInputPoint(r, g);
     if (mode == PreviewMode::Off || !analysed || worldPoints.empty()) {
         t.labelLegend->clear();
         if (preview) {

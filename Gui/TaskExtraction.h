@@ -130,6 +130,9 @@ private:
     void refreshHistogram();
     void refreshStage();
     void refreshPreview();
+    /// The Sec. 3 labels of the current region at its focus threshold per input point (-1
+    /// outside it; all low without a threshold); sets labelCounts.
+    std::vector<int> labelsPerInputPoint(const Region* r, const featurelines::RegionGeometry* g);
     void closePreview();
 
     Region* currentRegion();

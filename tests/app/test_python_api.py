@@ -62,6 +62,31 @@ class ExtractTest(unittest.TestCase):
         finally:
             support.close_document(doc)
 
+    def test_extract_gives_what_the_document_object_holds(self):
+        # One conversion of the core's result: the dict and the object's outputs agree.
+        doc = support.new_document("SameOutputs")
+        try:
+            cloud = support.add_cloud(doc, self.cube)
+            cloud.Placement = FreeCAD.Placement(FreeCAD.Vector(5, -3, 2),
+                                                FreeCAD.Rotation(FreeCAD.Vector(1, 1, 0), 30))
+            lines = FeatureLines.makeExtraction(cloud)
+            doc.recompute()
+            r = FeatureLines.extract(cloud)
+            for key, name in (("regions", "PointRegion"), ("patches", "PointPatch"),
+                              ("labels", "PointLabel")):
+                self.assertEqual(list(r[key]), list(getattr(lines, name)), key)
+            self.assertEqual(len(r["sharp"]), lines.SharpLineCount)
+            for mine, theirs in zip(r["sharp"], lines.SharpWires.Wires):
+                self.assertEqual([v.Point for v in mine.OrderedVertexes],
+                                 [v.Point for v in theirs.OrderedVertexes])
+            self.assertEqual(list(r["junctions"]), list(lines.Junctions))
+            self.assertEqual([t for ts in r["thresholds"].values() for t in ts],
+                             list(lines.UsedThresholds))
+            self.assertEqual(r["closed"], lines.ClosedLineCount)
+            self.assertAlmostEqual(r["spacing"], lines.Spacing.Value, places=12)
+        finally:
+            support.close_document(doc)
+
     def test_rounded_cube_wires_per_type_and_threshold(self):
         points = sampled_shapes.rounded_cube(40.0, RADIUS, SPACING, 6)
         r = FeatureLines.extract(points, ThresholdMode="Explicit",

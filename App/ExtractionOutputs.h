@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The one conversion of the core's result (featurelines::ExtractionResult) into FreeCAD data:
+// Part wires by line type, the thresholds used, per-point arrays and junctions, in world
+// coordinates. The document object (Extraction::setOutputs), the Python API (extract()) and the
+// task panel all read the result through it, so a line, a label or a junction means the same
+// thing in each.
+#pragma once
+
+#include <Base/Matrix.h>
+#include <Base/Vector3D.h>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <utility>
+#include <vector>
+
+#include "FeatureLines/Extraction.h"
+
+namespace Points {
+class PointKernel;
+}
+
+namespace FeatureLines {
+
+/// The source cloud's points in its own coordinates (the kernel's stored points); the matrix to
+/// world coordinates is the kernel's transform (its placement).
+featurelines::PointMatrix kernelPoints(const Points::PointKernel& kernel);
+
+/// Row `row` of `points` (x, y, z in the cloud's coordinates) in world coordinates.
+Base::Vector3d worldPoint(const Base::Matrix4D& toWorld, const featurelines::PointMatrix& points,
+                          Eigen::Index row);
+
+/// A point's Sec. 3 label as FreeCAD shows it: 0 low, 1 inner, 2 border, 3 noisy, -1 outside
+/// every region.
+int labelValue(featurelines::PointLabel label);
+/// labelValue of every label, in order.
+template <class Int>
+std::vector<Int> labelValues(const std::vector<featurelines::PointLabel>& labels)
+{
+    std::vector<Int> values(labels.size());
+    for (size_t i = 0; i < labels.size(); ++i) {
+        values[i] = Int(labelValue(labels[i]));
+    }
+    return values;
+}
+
+/// The lines as wires by type, in world coordinates; lines whose vertices all coincide are
+/// skipped.
+struct LineWires
+{
+    std::vector<TopoDS_Wire> sharp, smooth, boundary;
+    /// Per smooth wire: the region and threshold of its line.
+    std::vector<long> smoothRegion;
+    std::vector<double> smoothThreshold;
+    int closed = 0;
+};
+LineWires makeWires(const featurelines::ExtractionResult& result, const Base::Matrix4D& toWorld);
+/// A compound of the wires, in order.
+TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires);
+/// A compound of every wire: the sharp ones, then the smooth ones, then the boundary.
+TopoDS_Shape makeCompoundOfAll(const LineWires& wires);
+
+/// Everything FreeCAD shows of a result.
+struct ExtractionOutputs
+{
+    LineWires wires;
+    /// Points where three or more lines meet, in world coordinates.
+    std::vector<Base::Vector3d> junctions;
+    /// Mean point spacing of the cloud.
+    double spacing = 0.0;
+    /// Per region of the result, in its order: the region and the thresholds applied, high to
+    /// low.
+    std::vector<std::pair<long, std::vector<double>>> thresholdsByRegion;
+    /// The same thresholds as parallel lists: every threshold and its region.
+    std::vector<double> usedThresholds;
+    std::vector<long> usedThresholdRegions;
+    /// Per input point: its smooth region (-1 on the band of a sharp edge), patch (-1 outside
+    /// every region), label (labelValue) and mean curvature (NaN outside every region).
+    std::vector<long> region, patch, label;
+    std::vector<double> curvature;
+    /// The largest region and patch number + 1 (0 when there are none).
+    long regionCount = 0;
+    long patchCount = 0;
+};
+
+/// The result in world coordinates (`toWorld`: the source cloud's placement).
+ExtractionOutputs toOutputs(const featurelines::ExtractionResult& result,
+                            const Base::Matrix4D& toWorld);
+
+} // namespace FeatureLines
