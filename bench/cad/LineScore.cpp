@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "LineScore.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "PointGrid.h"
@@ -83,14 +85,24 @@ void finish(TypeScore& s, long matchedDetected, long matchedTruth)
     s.f1 = p + s.recall > 0.0 ? 2.0 * p * s.recall / (p + s.recall) : 0.0;
 }
 
-/// Share of lines that are closed or end on a line at both ends (see LineScore::closedness);
-/// with `only`, of the lines of that type (their ends may lie on a line of any type).
-double closednessOf(const std::vector<TypedPolyline>& lines, double step, double tol,
+/// The ends of a set of lines: how many lines are closed or end on a line at both ends, of
+/// how many counted, and how many open-line ends join nothing (see LineScore::closedness);
+/// with `only`, the lines of that type (their ends may lie on a line of any type).
+struct LineEnds
+{
+    int good = 0;
+    int counted = 0;
+    int freeEnds = 0;
+
+    double closedness() const
+    {
+        return counted > 0 ? static_cast<double>(good) / static_cast<double>(counted) : notDefined;
+    }
+};
+
+LineEnds lineEndsOf(const std::vector<TypedPolyline>& lines, double step, double tol,
                     const LineType* only = nullptr)
 {
-    if (lines.empty()) {
-        return notDefined;
-    }
     // Every sample remembers its line and its arc length, so that an end can be tested
     // against the other lines and against the far parts of its own line.
     struct Sample
@@ -122,29 +134,107 @@ double closednessOf(const std::vector<TypedPolyline>& lines, double step, double
         });
         return joined;
     };
-    int good = 0;
-    int counted = 0;
+    LineEnds ends;
     for (size_t l = 0; l < lines.size(); ++l) {
         const TypedPolyline& line = lines[l];
         if (only && line.type != *only) {
             continue;
         }
-        ++counted;
+        ++ends.counted;
         if (line.closed) {
-            ++good;
+            ++ends.good;
             continue;
         }
         if (line.points.rows() == 0) {
             continue;
         }
         const int id = static_cast<int>(l);
-        const Eigen::Vector3d first = line.points.row(0).transpose();
-        const Eigen::Vector3d last = line.points.row(line.points.rows() - 1).transpose();
-        if (endJoined(id, first, 0.0) && endJoined(id, last, lengths[l])) {
-            ++good;
+        const bool first = endJoined(id, line.points.row(0).transpose(), 0.0);
+        const bool last =
+            endJoined(id, line.points.row(line.points.rows() - 1).transpose(), lengths[l]);
+        ends.good += first && last ? 1 : 0;
+        ends.freeEnds += (first ? 0 : 1) + (last ? 0 : 1);
+    }
+    return ends;
+}
+
+/// Distance from q to the segment [a, b].
+double segmentDistance(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const Eigen::Vector3d ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - q).norm();
+}
+
+/// The true edges resampled, with a grid over their samples, answering the exact distance
+/// from a point to the nearest edge within a radius (through the segments next to the
+/// samples within it).
+class EdgeDistance
+{
+public:
+    EdgeDistance(const std::vector<TypedPolyline>& edges, double step, double radius) : grid(radius)
+    {
+        for (const TypedPolyline& e : edges) {
+            checkLine(e, "true");
+            lines.push_back({resamplePolyline(e, step), e.closed});
+            const PointMatrix& s = lines.back().samples;
+            for (Eigen::Index i = 0; i < s.rows(); ++i) {
+                grid.insert(s.row(i).transpose(), static_cast<int>(where.size()));
+                where.push_back({static_cast<int>(lines.size() - 1), static_cast<int>(i)});
+            }
         }
     }
-    return counted > 0 ? static_cast<double>(good) / static_cast<double>(counted) : notDefined;
+
+    /// The distance from q to the nearest edge, when an edge sample lies within the radius.
+    std::optional<double> nearest(const Eigen::Vector3d& q) const
+    {
+        std::optional<double> best;
+        grid.forEachWithin(q, grid.cellSize(), [&](int id, double) {
+            const Sample& w = where[static_cast<size_t>(id)];
+            const Line& line = lines[static_cast<size_t>(w.line)];
+            const Eigen::Index n = line.samples.rows();
+            const Eigen::Vector3d p = line.samples.row(w.index).transpose();
+            double d = (p - q).norm();
+            for (const Eigen::Index j : {w.index - 1, w.index + 1}) {
+                const bool inside = j >= 0 && j < n;
+                if (inside || (line.closed && n > 2)) {
+                    const Eigen::Index k = (j + n) % n;
+                    d = std::min(d, segmentDistance(q, p, line.samples.row(k).transpose()));
+                }
+            }
+            best = best ? std::min(*best, d) : d;
+            return true;
+        });
+        return best;
+    }
+
+private:
+    struct Line
+    {
+        PointMatrix samples;
+        bool closed;
+    };
+    struct Sample
+    {
+        int line;
+        Eigen::Index index;
+    };
+    std::vector<Line> lines;
+    std::vector<Sample> where;
+    PointGrid grid;
+};
+
+/// The value below which `share` of the values lie (nearest rank), NaN for none.
+double quantile(std::vector<double> values, double share)
+{
+    if (values.empty()) {
+        return notDefined;
+    }
+    const size_t rank = static_cast<size_t>(std::ceil(share * static_cast<double>(values.size())));
+    const size_t k = std::min(values.size() - 1, rank > 0 ? rank - 1 : 0);
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
 }
 
 } // namespace
@@ -235,9 +325,9 @@ LineScore scoreLines(const std::vector<TypedPolyline>& detected,
         const long matchedTruth = countNear(tru[t].points, gridOf(det[t].points, tol), tol);
         finish(s, matchedDetected, matchedTruth);
     }
-    result.closedness = closednessOf(detected, step, tol);
+    result.closedness = lineEndsOf(detected, step, tol).closedness();
     const LineType sharp = LineType::Sharp;
-    result.sharpClosedness = closednessOf(detected, step, tol, &sharp);
+    result.sharpClosedness = lineEndsOf(detected, step, tol, &sharp).closedness();
     result.lineCount = static_cast<int>(detected.size());
     return result;
 }
@@ -296,6 +386,93 @@ LineScore scoreFlaggedPoints(const PointMatrix& flagged, const std::vector<Typed
     result.sharpClosedness = notDefined;
     result.lineCount = 0;
     return result;
+}
+
+double LineQuality::confusionShare(LineType truth, LineType found) const
+{
+    const auto& row = confusion[static_cast<size_t>(truth)];
+    long total = missed[static_cast<size_t>(truth)];
+    for (const long n : row) {
+        total += n;
+    }
+    return total > 0
+               ? static_cast<double>(row[static_cast<size_t>(found)]) / static_cast<double>(total)
+               : notDefined;
+}
+
+LineQuality measureLineQuality(const std::vector<TypedPolyline>& detected,
+                               const std::vector<TypedPolyline>& truth,
+                               const LineScoreOptions& options)
+{
+    checkPositive(options.spacing, "the point spacing");
+    checkPositive(options.toleranceFactor, "the tolerance factor");
+    checkPositive(options.resampleFactor, "the resampling factor");
+    const double tol = options.toleranceFactor * options.spacing;
+    const double step = options.resampleFactor * options.spacing;
+    LineQuality q;
+
+    // Distances of the detected samples to the true edges.
+    const EdgeDistance edges(truth, step, tol);
+    std::vector<double> distances;
+    long samples = 0;
+    for (const TypedPolyline& line : detected) {
+        checkLine(line, "detected");
+        const PointMatrix s = resamplePolyline(line, step);
+        for (Eigen::Index i = 0; i < s.rows(); ++i, ++samples) {
+            if (const std::optional<double> d = edges.nearest(s.row(i).transpose())) {
+                distances.push_back(*d / options.spacing);
+            }
+        }
+        if (line.type == LineType::Boundary) {
+            for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+                q.boundaryLength += (line.points.row(i) - line.points.row(i - 1)).norm();
+            }
+            if (line.closed && line.points.rows() > 2) {
+                q.boundaryLength +=
+                    (line.points.row(0) - line.points.row(line.points.rows() - 1)).norm();
+            }
+        }
+    }
+    q.boundaryLength /= options.spacing;
+    q.matchedShare = samples > 0
+                         ? static_cast<double>(distances.size()) / static_cast<double>(samples)
+                         : notDefined;
+    q.medianDistance = quantile(distances, 0.5);
+    q.p95Distance = quantile(distances, 0.95);
+
+    // The type each true sample is found as: that of the nearest detected sample.
+    const auto det = samplesByType(detected, step, "detected");
+    std::vector<PointGrid> grids;
+    for (int t = 0; t < lineTypeCount; ++t) {
+        grids.push_back(gridOf(det[t].points, tol));
+    }
+    const auto tru = samplesByType(truth, step, "true");
+    for (int t = 0; t < lineTypeCount; ++t) {
+        for (const Eigen::Vector3d& p : tru[t].points) {
+            int found = -1;
+            double best = std::numeric_limits<double>::infinity();
+            for (int u = 0; u < lineTypeCount; ++u) {
+                grids[static_cast<size_t>(u)].forEachWithin(p, tol, [&](int, double d2) {
+                    if (d2 < best) {
+                        best = d2;
+                        found = u;
+                    }
+                    return true;
+                });
+            }
+            if (found < 0) {
+                ++q.missed[static_cast<size_t>(t)];
+            } else {
+                ++q.confusion[static_cast<size_t>(t)][static_cast<size_t>(found)];
+            }
+        }
+    }
+
+    q.linesPerTrueEdge =
+        truth.empty() ? notDefined
+                      : static_cast<double>(detected.size()) / static_cast<double>(truth.size());
+    q.freeEnds = lineEndsOf(detected, step, tol).freeEnds;
+    return q;
 }
 
 } // namespace featurelines::bench

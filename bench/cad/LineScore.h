@@ -104,4 +104,40 @@ LineScore scoreLines(const std::vector<TypedPolyline>& detected,
 LineScore scoreFlaggedPoints(const PointMatrix& flagged, const std::vector<TypedPolyline>& truth,
                              const LineScoreOptions& options);
 
+/// How well the detected lines sit on the true edges, beyond matching within the tolerance:
+/// the distance of the lines to the edges, which type they give each edge, and how many
+/// pieces they come in. Lengths in point spacings.
+struct LineQuality
+{
+    /// Distance from each detected line sample (any type) to the nearest true edge (any
+    /// type; the exact distance to the true polyline's segments), over the samples within the
+    /// tolerance of an edge: median and 95th percentile, in spacings. NaN without such samples.
+    double medianDistance = 0.0;
+    double p95Distance = 0.0;
+    /// Share of the detected samples within the tolerance of a true edge of any type.
+    double matchedShare = 0.0;
+    /// confusion[t][u]: true samples of type t whose nearest detected sample within the
+    /// tolerance lies on a line of type u; missed[t]: true samples of type t with none.
+    std::array<std::array<long, lineTypeCount>, lineTypeCount> confusion{};
+    std::array<long, lineTypeCount> missed{};
+    /// Total length of the detected boundary lines, in spacings (0 on a closed part).
+    double boundaryLength = 0.0;
+    /// Detected lines per true edge (one true edge per B-rep edge of the truth), and the ends
+    /// of open lines that neither join another line nor come back to their own (as in
+    /// LineScore::closedness).
+    double linesPerTrueEdge = 0.0;
+    int freeEnds = 0;
+
+    /// Share of the true samples of type `truth` found as type `found` (NaN without true
+    /// samples of that type).
+    double confusionShare(LineType truth, LineType found) const;
+};
+
+/// Measures LineQuality of `detected` against `truth` with the tolerance and resampling of
+/// `options` (the true edges are resampled at the same step; distances are to their
+/// segments). Throws std::invalid_argument as scoreLines does.
+LineQuality measureLineQuality(const std::vector<TypedPolyline>& detected,
+                               const std::vector<TypedPolyline>& truth,
+                               const LineScoreOptions& options);
+
 } // namespace featurelines::bench

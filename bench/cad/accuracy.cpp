@@ -26,6 +26,7 @@
 #include "FeatureLines/Extraction.h"
 
 #include "Baselines.h"
+#include "CadFiles.h"
 #include "CadShapes.h"
 #include "LineScore.h"
 #include "ShapeSampling.h"
@@ -89,6 +90,8 @@ struct Arguments
     unsigned seed = 1;
     std::string writeDir;
     std::string linesDir;
+    /// A folder of real CAD models (STEP, IGES, BREP) measured after the built-in parts.
+    std::string stepDir;
     std::string demoCloud;
     double demoPoints = 40000.0;
     bool markdown = false;
@@ -111,6 +114,8 @@ const char* usage =
     "  --write DIR             write DIR/<part>-<clean|noisy>/cloud.xyz and truth.json\n"
     "  --lines DIR             also score DIR/<part>-<clean|noisy>/lines.json (the lines JSON\n"
     "                          of any detector, e.g. the featurelines CLI run on cloud.xyz)\n"
+    "  --step-dir DIR          also measure every STEP, IGES or BREP model in DIR (real\n"
+    "                          CAD parts, reported apart; --shapes none for these only)\n"
     "  --demo-cloud FILE       write the demo cloud (boss_blend, clean, 6 digits) to FILE\n"
     "  --demo-points N         points of the demo cloud (default 40000)\n"
     "  --markdown              print tables as Markdown\n"
@@ -180,7 +185,8 @@ Arguments parseArguments(int argc, char** argv)
             return argv[++i];
         };
         if (opt == "--shapes") {
-            a.shapes = splitComma(value());
+            const std::string list = value();
+            a.shapes = list == "none" ? std::vector<std::string>{} : splitComma(list);
         } else if (opt == "--points") {
             a.points = parseNumber(value(), opt);
         } else if (opt == "--spacing-fraction") {
@@ -195,6 +201,8 @@ Arguments parseArguments(int argc, char** argv)
             a.writeDir = value();
         } else if (opt == "--lines") {
             a.linesDir = value();
+        } else if (opt == "--step-dir") {
+            a.stepDir = value();
         } else if (opt == "--demo-cloud") {
             a.demoCloud = value();
         } else if (opt == "--demo-points") {
@@ -500,8 +508,11 @@ struct Row
     LineScore score;
     double seconds = 0.0;
     bool perPoint = false;
-    /// A held-out part (CadShapes.h): its means are reported apart.
-    bool heldOut = false;
+    /// "measured", "held-out" (CadShapes.h) or "real" (--step-dir): means per group.
+    std::string group = "measured";
+    /// For line detectors: F1 at a tolerance of one spacing, and LineQuality.
+    LineScore scoreAtOneSpacing;
+    LineQuality quality;
 };
 
 std::string fmt(double v, int decimals = 3)
@@ -629,12 +640,16 @@ struct SweepResult
     std::array<std::vector<double>, lineTypeCount> f1;
 };
 
-int run(const Arguments& args)
+/// Everything measured: the rows of every part, noise level and detector, the baselines'
+/// sweeps, and one row per part describing it.
+struct Results
 {
     std::vector<Row> rows;
     std::vector<SweepResult> sweeps;
-    const auto sweepSlot = [&](const std::string& baseline, const std::string& noise,
-                               double threshold) -> SweepResult& {
+    std::vector<std::vector<std::string>> partRows;
+
+    SweepResult& sweepSlot(const std::string& baseline, const std::string& noise, double threshold)
+    {
         for (SweepResult& s : sweeps) {
             if (s.baseline == baseline && s.noise == noise && s.threshold == threshold) {
                 return s;
@@ -642,132 +657,156 @@ int run(const Arguments& args)
         }
         sweeps.push_back({baseline, noise, threshold, {}});
         return sweeps.back();
+    }
+};
+
+/// One part's clean cloud, its spacing and its true edges.
+struct SampledPart
+{
+    SampledCloud clean;
+    double spacing = 0.0;
+    std::vector<TypedPolyline> truth;
+    unsigned seed = 0;
+};
+
+SampledPart samplePart(const CadShape& part, unsigned seed, const Arguments& args, Results& results)
+{
+    const auto buildStart = std::chrono::steady_clock::now();
+    SamplingOptions sampling;
+    sampling.radius = args.spacingFraction > 0.0
+                          ? args.spacingFraction * boundingDiagonal(part.shape)
+                          : radiusForPointCount(shapeArea(part.shape), args.points);
+    sampling.seed = seed;
+    SampledPart s;
+    s.seed = seed;
+    s.clean = keptAtRandom(sampleShape(part.shape, sampling), args.keep, sampling.seed + 700u);
+    s.spacing = meanNearestSpacing(s.clean.points);
+    TruthOptions truthOptions;
+    truthOptions.step = 0.5 * s.spacing;
+    s.truth = truthEdges(part.shape, truthOptions);
+    std::array<int, lineTypeCount> edgeCount{};
+    for (const TypedPolyline& l : s.truth) {
+        ++edgeCount[static_cast<size_t>(l.type)];
+    }
+    results.partRows.push_back(
+        {part.name, std::to_string(s.clean.points.rows()), fmt(s.spacing, 3),
+         fmt(sampling.radius, 3),
+         part.smallestRadius > 0 ? fmt(part.smallestRadius / s.spacing, 1) : "-",
+         std::to_string(edgeCount[0]), std::to_string(edgeCount[1]), std::to_string(edgeCount[2]),
+         fmt(seconds(buildStart), 1)});
+    return s;
+}
+
+/// A row of a line detector: scored at the benchmark's tolerance and at one spacing, with its
+/// LineQuality.
+Row lineRow(const std::string& name, const std::string& noise, const std::string& detector,
+            const std::vector<TypedPolyline>& lines, const SampledPart& s)
+{
+    Row row(name, noise, detector);
+    row.available = true;
+    LineScoreOptions scoring;
+    scoring.spacing = s.spacing;
+    row.score = scoreLines(lines, s.truth, scoring);
+    row.quality = measureLineQuality(lines, s.truth, scoring);
+    scoring.toleranceFactor = 1.0;
+    row.scoreAtOneSpacing = scoreLines(lines, s.truth, scoring);
+    return row;
+}
+
+/// The per-point baselines on one cloud: a row at each fixed threshold, and the sweeps over
+/// the measured parts.
+void runBaselines(const std::string& name, const std::string& noise, const std::string& group,
+                  const SampledCloud& cloud, const SampledPart& s, Results& results)
+{
+    LineScoreOptions scoring;
+    scoring.spacing = s.spacing;
+    const auto baseline = [&](const std::string& label, double fixed,
+                              const std::vector<double>& sweep,
+                              const std::function<std::vector<double>()>& values) {
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<double> v = values();
+        Row row(name, noise, label + " > " + fmt(fixed, fixed < 1 ? 2 : 0));
+        row.group = group;
+        row.seconds = seconds(start);
+        row.available = true;
+        row.perPoint = true;
+        row.score = scoreFlaggedPoints(pointsAbove(cloud.points, v, fixed), s.truth, scoring);
+        results.rows.push_back(row);
+        // The sweeps are over the measured parts only, like the means.
+        for (double t : group == "measured" ? sweep : std::vector<double>{}) {
+            const LineScore score =
+                scoreFlaggedPoints(pointsAbove(cloud.points, v, t), s.truth, scoring);
+            SweepResult& slot = results.sweepSlot(label, noise, t);
+            for (int ty = 0; ty < lineTypeCount; ++ty) {
+                if (score.types[static_cast<size_t>(ty)].truthSamples > 0) {
+                    slot.f1[static_cast<size_t>(ty)].push_back(
+                        score.types[static_cast<size_t>(ty)].f1);
+                }
+            }
+        }
     };
+    baseline("pcl-surface-variation", fixedSurfaceVariation, surfaceVariationSweep,
+             [&] { return surfaceVariation(cloud.points); });
+    baseline("pcl-normal-angle", fixedNormalAngle, normalAngleSweep,
+             [&] { return normalAngleDegrees(cloud.points); });
+}
 
-    std::vector<std::vector<std::string>> partRows;
-    const auto names = allShapeNames();
-    for (const std::string& name : args.shapes) {
-        const size_t shapeIndex =
-            static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-        const auto buildStart = std::chrono::steady_clock::now();
-        const CadShape part = makeCadShape(name);
-        const double area = shapeArea(part.shape);
-        SamplingOptions sampling;
-        sampling.radius = args.spacingFraction > 0.0
-                              ? args.spacingFraction * boundingDiagonal(part.shape)
-                              : radiusForPointCount(area, args.points);
-        // Seeds follow the part's place in the full list, so a subset gives the same clouds.
-        sampling.seed = args.seed * 1000u + static_cast<unsigned>(shapeIndex);
-        const SampledCloud clean =
-            keptAtRandom(sampleShape(part.shape, sampling), args.keep, sampling.seed + 700u);
-        const double spacing = meanNearestSpacing(clean.points);
-        TruthOptions truthOptions;
-        truthOptions.step = 0.5 * spacing;
-        const std::vector<TypedPolyline> truth = truthEdges(part.shape, truthOptions);
-        std::array<int, lineTypeCount> edgeCount{};
-        for (const TypedPolyline& l : truth) {
-            ++edgeCount[static_cast<size_t>(l.type)];
+/// Samples `part` (seeded), clean and noisy, runs every detector on each cloud and scores it.
+void measurePart(const CadShape& part, const std::string& group, unsigned seed,
+                 const Arguments& args, Results& results)
+{
+    const SampledPart s = samplePart(part, seed, args, results);
+    for (const bool noisy : {false, true}) {
+        if (noisy && args.noiseSigma <= 0.0) {
+            continue;
         }
-        partRows.push_back({name, std::to_string(clean.points.rows()), fmt(spacing, 3),
-                            fmt(sampling.radius, 3),
-                            part.smallestRadius > 0 ? fmt(part.smallestRadius / spacing, 1) : "-",
-                            std::to_string(edgeCount[0]), std::to_string(edgeCount[1]),
-                            std::to_string(edgeCount[2]), fmt(seconds(buildStart), 1)});
-
-        LineScoreOptions scoring;
-        scoring.spacing = spacing;
-
-        for (const bool noisy : {false, true}) {
-            if (noisy && args.noiseSigma <= 0.0) {
-                continue;
-            }
-            const std::string noise = noisy ? "noisy" : "clean";
-            SampledCloud cloud = clean;
-            if (noisy) {
-                addNormalNoise(cloud, args.noiseSigma * spacing, sampling.seed + 500u);
-            }
-            const std::string caseName = name + "-" + noise;
-            if (!args.writeDir.empty()) {
-                const std::filesystem::path dir = std::filesystem::path(args.writeDir) / caseName;
-                std::filesystem::create_directories(dir);
-                writeXyz((dir / "cloud.xyz").string(), cloud.points, 9);
-                writeLinesJson((dir / "truth.json").string(), truth, name, spacing);
-            }
-
-            // The project's extraction.
-            {
-                Row row(name, noise, "featurelines");
-                row.heldOut = isHeldOut(name);
-                const auto start = std::chrono::steady_clock::now();
-                const auto lines = runFeatureLines(cloud.points);
-                row.seconds = seconds(start);
-                row.available = lines.has_value();
-                if (lines) {
-                    row.score = scoreLines(*lines, truth, scoring);
-                }
-                rows.push_back(row);
-            }
-            // Lines of an external run, when given.
-            if (!args.linesDir.empty()) {
-                const std::filesystem::path file =
-                    std::filesystem::path(args.linesDir) / caseName / "lines.json";
-                Row row(name, noise, "lines.json");
-                row.heldOut = isHeldOut(name);
-                if (std::filesystem::exists(file)) {
-                    row.available = true;
-                    row.score = scoreLines(readLinesJson(file.string()), truth, scoring);
-                }
-                rows.push_back(row);
-            }
-            // Per-point baselines: fixed threshold row, and the sweep.
-            const auto baseline = [&](const std::string& label, double fixed,
-                                      const std::vector<double>& sweep,
-                                      const std::function<std::vector<double>()>& values) {
-                const auto start = std::chrono::steady_clock::now();
-                const std::vector<double> v = values();
-                Row row(name, noise, label + " > " + fmt(fixed, fixed < 1 ? 2 : 0));
-                row.heldOut = isHeldOut(name);
-                row.seconds = seconds(start);
-                row.available = true;
-                row.perPoint = true;
-                row.score = scoreFlaggedPoints(pointsAbove(cloud.points, v, fixed), truth, scoring);
-                rows.push_back(row);
-                // The sweeps are over the measured parts only, like the means.
-                for (double t : isHeldOut(name) ? std::vector<double>{} : sweep) {
-                    const LineScore s =
-                        scoreFlaggedPoints(pointsAbove(cloud.points, v, t), truth, scoring);
-                    SweepResult& slot = sweepSlot(label, noise, t);
-                    for (int ty = 0; ty < lineTypeCount; ++ty) {
-                        if (s.types[static_cast<size_t>(ty)].truthSamples > 0) {
-                            slot.f1[static_cast<size_t>(ty)].push_back(
-                                s.types[static_cast<size_t>(ty)].f1);
-                        }
-                    }
-                }
-            };
-            if (args.baselines) {
-                baseline("pcl-surface-variation", fixedSurfaceVariation, surfaceVariationSweep,
-                         [&] { return surfaceVariation(cloud.points); });
-                baseline("pcl-normal-angle", fixedNormalAngle, normalAngleSweep,
-                         [&] { return normalAngleDegrees(cloud.points); });
-            }
+        const std::string noise = noisy ? "noisy" : "clean";
+        SampledCloud cloud = s.clean;
+        if (noisy) {
+            addNormalNoise(cloud, args.noiseSigma * s.spacing, s.seed + 500u);
         }
-        std::cerr << "done: " << name << "\n";
-    }
+        const std::string caseName = part.name + "-" + noise;
+        if (!args.writeDir.empty()) {
+            const std::filesystem::path dir = std::filesystem::path(args.writeDir) / caseName;
+            std::filesystem::create_directories(dir);
+            writeXyz((dir / "cloud.xyz").string(), cloud.points, 9);
+            writeLinesJson((dir / "truth.json").string(), s.truth, part.name, s.spacing);
+        }
 
-    if (!args.markdown) {
-        std::cout << "Parts (spacing: mean nearest-neighbour distance of the clean cloud; "
-                     "tolerance 3 x spacing)\n";
+        // The project's extraction.
+        const auto start = std::chrono::steady_clock::now();
+        const auto lines = runFeatureLines(cloud.points);
+        const double extractionSeconds = seconds(start);
+        Row row = lines ? lineRow(part.name, noise, "featurelines", *lines, s)
+                        : Row(part.name, noise, "featurelines");
+        row.seconds = extractionSeconds;
+        row.group = group;
+        results.rows.push_back(row);
+        // Lines of an external run, when given.
+        if (!args.linesDir.empty()) {
+            const std::filesystem::path file =
+                std::filesystem::path(args.linesDir) / caseName / "lines.json";
+            Row external = std::filesystem::exists(file) ? lineRow(part.name, noise, "lines.json",
+                                                                   readLinesJson(file.string()), s)
+                                                         : Row(part.name, noise, "lines.json");
+            external.group = group;
+            results.rows.push_back(external);
+        }
+        if (args.baselines) {
+            runBaselines(part.name, noise, group, cloud, s, results);
+        }
     }
-    printTable({"part", "points", "spacing", "Poisson r", "min fillet / spacing", "sharp edges",
-                "smooth edges", "boundary edges", "build+sample s"},
-               partRows, args.markdown);
+    std::cerr << "done: " << part.name << "\n";
+}
 
+/// The rows of every detector and their means per group, detector and noise level.
+void printScores(const Results& results, bool markdown)
+{
     std::vector<std::string> header = {"part", "noise", "detector"};
     header.insert(header.end(), scoreHeader.begin(), scoreHeader.end());
     header.insert(header.end(), {"closed", "sharp closed", "lines", "time s"});
     std::vector<std::vector<std::string>> table;
-    for (const Row& r : rows) {
+    for (const Row& r : results.rows) {
         std::vector<std::string> cells = {r.shape, r.noise, r.detector};
         const auto sc = scoreCells(r.score, r.available);
         cells.insert(cells.end(), sc.begin(), sc.end());
@@ -777,33 +816,34 @@ int run(const Arguments& args)
         cells.push_back(r.available ? fmt(r.seconds, 2) : "-");
         table.push_back(cells);
     }
-    printTable(header, table, args.markdown);
+    printTable(header, table, markdown);
 
-    // Mean per detector and noise level, over the measured parts and, apart, over the
-    // held-out ones.
+    // Mean per group, detector and noise level: the measured parts, then the held-out ones,
+    // then the real CAD parts.
     std::vector<std::vector<std::string>> means;
-    std::vector<std::tuple<bool, std::string, std::string>> keys;
-    for (const Row& r : rows) {
-        const auto key = std::make_tuple(r.heldOut, r.detector, r.noise);
-        if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-            keys.push_back(key);
-        }
-    }
-    std::stable_sort(keys.begin(), keys.end(),
-                     [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
-    for (const auto& [heldOut, detector, noise] : keys) {
-        std::vector<const Row*> group;
-        bool available = true;
-        bool perPoint = false;
-        for (const Row& r : rows) {
-            if (r.heldOut == heldOut && r.detector == detector && r.noise == noise) {
-                available = available && r.available;
-                perPoint = r.perPoint;
-                group.push_back(&r);
+    std::vector<std::tuple<std::string, std::string, std::string>> keys;
+    for (const char* group : {"measured", "held-out", "real"}) {
+        for (const Row& r : results.rows) {
+            const auto key = std::make_tuple(std::string(group), r.detector, r.noise);
+            if (r.group == group && std::find(keys.begin(), keys.end(), key) == keys.end()) {
+                keys.push_back(key);
             }
         }
-        std::vector<std::string> cells = {heldOut ? "mean held-out" : "mean", noise, detector};
-        const LineScore m = available ? meanScore(group) : LineScore{};
+    }
+    for (const auto& [group, detector, noise] : keys) {
+        std::vector<const Row*> members;
+        bool available = true;
+        bool perPoint = false;
+        for (const Row& r : results.rows) {
+            if (r.group == group && r.detector == detector && r.noise == noise) {
+                available = available && r.available;
+                perPoint = r.perPoint;
+                members.push_back(&r);
+            }
+        }
+        const std::string label = group == "measured" ? "mean" : "mean " + group;
+        std::vector<std::string> cells = {label, noise, detector};
+        const LineScore m = available ? meanScore(members) : LineScore{};
         const auto sc = scoreCells(m, available);
         cells.insert(cells.end(), sc.begin(), sc.end());
         cells.push_back(available && !perPoint ? fmt(m.closedness) : "-");
@@ -812,34 +852,111 @@ int run(const Arguments& args)
         cells.push_back("-");
         means.push_back(cells);
     }
-    if (!args.markdown) {
-        std::cout << "Mean over the parts that have the edge type (held-out parts apart)\n";
+    if (!markdown) {
+        std::cout << "Mean over the parts that have the edge type (held-out and real parts "
+                     "apart)\n";
     }
-    printTable(header, means, args.markdown);
+    printTable(header, means, markdown);
+}
 
-    // The baselines' sweeps: mean F1 per type at every threshold.
+/// Per line detector and part: F1 at one spacing, distances to the true edges, type
+/// confusion, boundary on closed parts and fragmentation (LineQuality).
+void printLineQuality(const Results& results, bool markdown)
+{
+    std::vector<std::vector<std::string>> table;
+    for (const Row& r : results.rows) {
+        if (!r.available || r.perPoint) {
+            continue;
+        }
+        const LineQuality& q = r.quality;
+        const auto f1 = [&](LineType t) {
+            return fmt(r.scoreAtOneSpacing.types[static_cast<size_t>(t)].f1);
+        };
+        table.push_back({r.shape, r.noise, r.detector, f1(LineType::Sharp), f1(LineType::Smooth),
+                         fmt(q.medianDistance, 2), fmt(q.p95Distance, 2),
+                         fmt(q.confusionShare(LineType::Sharp, LineType::Smooth)),
+                         fmt(q.confusionShare(LineType::Smooth, LineType::Sharp)),
+                         fmt(q.boundaryLength, 1), fmt(q.linesPerTrueEdge, 2),
+                         std::to_string(q.freeEnds)});
+    }
+    if (table.empty()) {
+        return;
+    }
+    if (!markdown) {
+        std::cout << "Line quality (distances in spacings; confusion: share of the true edge "
+                     "samples found as the other type)\n";
+    }
+    printTable({"part", "noise", "detector", "sharp F1 @1h", "smooth F1 @1h", "median dist",
+                "p95 dist", "sharp as smooth", "smooth as sharp", "boundary length", "lines/edge",
+                "free ends"},
+               table, markdown);
+}
+
+void printSweeps(const Results& results, bool markdown)
+{
     std::vector<std::vector<std::string>> sweepRows;
-    for (const SweepResult& s : sweeps) {
+    for (const SweepResult& s : results.sweeps) {
         sweepRows.push_back({s.baseline, s.noise, fmt(s.threshold, s.threshold < 1 ? 3 : 0),
                              fmt(meanOf(s.f1[0])), fmt(meanOf(s.f1[1])), fmt(meanOf(s.f1[2]))});
     }
-    if (!sweepRows.empty()) {
-        if (!args.markdown) {
-            std::cout << "Baseline sweeps: mean F1 over the parts at each threshold\n";
+    if (sweepRows.empty()) {
+        return;
+    }
+    if (!markdown) {
+        std::cout << "Baseline sweeps: mean F1 over the parts at each threshold\n";
+    }
+    printTable({"baseline", "noise", "threshold", "sharp F1", "smooth F1", "boundary F1"},
+               sweepRows, markdown);
+}
+
+void writeDemoCloud(const Arguments& args)
+{
+    const CadShape part = makeCadShape("boss_blend");
+    SamplingOptions sampling;
+    sampling.radius = radiusForPointCount(shapeArea(part.shape), args.demoPoints);
+    sampling.seed = args.seed;
+    const SampledCloud demo = sampleShape(part.shape, sampling);
+    writeXyz(args.demoCloud, demo.points, 6);
+    std::cerr << "demo cloud: " << args.demoCloud << " (" << demo.points.rows()
+              << " points, spacing " << meanNearestSpacing(demo.points) << ")\n";
+}
+
+int run(const Arguments& args)
+{
+    Results results;
+    const auto names = allShapeNames();
+    for (const std::string& name : args.shapes) {
+        // Seeds follow the part's place in the full list, so a subset gives the same clouds.
+        const size_t index =
+            static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+        measurePart(makeCadShape(name), isHeldOut(name) ? "held-out" : "measured",
+                    args.seed * 1000u + static_cast<unsigned>(index), args, results);
+    }
+    if (!args.stepDir.empty()) {
+        const CadFolder folder = readCadFolder(args.stepDir);
+        for (const CadFileReport& f : folder.files) {
+            if (!f.error.empty()) {
+                std::cerr << "not measured: " << f.error << "\n";
+            }
         }
-        printTable({"baseline", "noise", "threshold", "sharp F1", "smooth F1", "boundary F1"},
-                   sweepRows, args.markdown);
+        for (size_t i = 0; i < folder.parts.size(); ++i) {
+            measurePart(folder.parts[i], "real",
+                        args.seed * 1000u + 500u + static_cast<unsigned>(i), args, results);
+        }
     }
 
+    if (!args.markdown) {
+        std::cout << "Parts (spacing: mean nearest-neighbour distance of the clean cloud; "
+                     "tolerance 3 x spacing)\n";
+    }
+    printTable({"part", "points", "spacing", "Poisson r", "min fillet / spacing", "sharp edges",
+                "smooth edges", "boundary edges", "build+sample s"},
+               results.partRows, args.markdown);
+    printScores(results, args.markdown);
+    printLineQuality(results, args.markdown);
+    printSweeps(results, args.markdown);
     if (!args.demoCloud.empty()) {
-        const CadShape part = makeCadShape("boss_blend");
-        SamplingOptions sampling;
-        sampling.radius = radiusForPointCount(shapeArea(part.shape), args.demoPoints);
-        sampling.seed = args.seed;
-        const SampledCloud demo = sampleShape(part.shape, sampling);
-        writeXyz(args.demoCloud, demo.points, 6);
-        std::cerr << "demo cloud: " << args.demoCloud << " (" << demo.points.rows()
-                  << " points, spacing " << meanNearestSpacing(demo.points) << ")\n";
+        writeDemoCloud(args);
     }
     return 0;
 }

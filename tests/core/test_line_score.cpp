@@ -188,3 +188,77 @@ TEST(LineScore, BadInputIsRejected)
     EXPECT_THROW(scoreLines({bad}, {}, options()), std::invalid_argument);
     EXPECT_THROW(lineTypeFromName("crease"), std::invalid_argument);
 }
+
+TEST(LineQuality, LineParallelToTheEdgeSitsAtItsOffset)
+{
+    // A circle of radius 10 as truth (a curved edge, coarse vertices) and a detected circle of
+    // radius 10.25 (half a spacing out), densely sampled: the distance to the true polyline's
+    // segments is the offset, up to the chord's sagitta of the true polygon.
+    const auto circle = [](LineType type, double r, int n) {
+        TypedPolyline line;
+        line.type = type;
+        line.closed = true;
+        line.points.resize(n, 3);
+        for (int i = 0; i < n; ++i) {
+            const double a = 2.0 * M_PI * i / n;
+            line.points.row(i) << r * std::cos(a), r * std::sin(a), 0.0;
+        }
+        return line;
+    };
+    const std::vector<TypedPolyline> truth = {circle(LineType::Smooth, 10.0, 720)};
+    const std::vector<TypedPolyline> detected = {circle(LineType::Smooth, 10.25, 2000)};
+    const LineQuality q = measureLineQuality(detected, truth, options());
+    // 0.25 model units = half a spacing; the true polygon's resampling chords (step 0.25)
+    // lie inside the circle by at most 0.25^2 / 80, under 1e-3 units.
+    EXPECT_NEAR(q.medianDistance, 0.5, 0.01);
+    EXPECT_NEAR(q.p95Distance, 0.5, 0.01);
+    EXPECT_DOUBLE_EQ(q.matchedShare, 1.0);
+    EXPECT_EQ(q.freeEnds, 0);
+    EXPECT_DOUBLE_EQ(q.linesPerTrueEdge, 1.0);
+}
+
+TEST(LineQuality, LineOnTheEdgeHasDistanceZero)
+{
+    // Vertices of the detected line fall between the true line's resampled vertices: the
+    // distance is to the segments, so it is 0, not up to half a resampling step.
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {10, 0, 0}, 2)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Sharp, {0.1, 0, 0}, {9.9, 0, 0}, 37)};
+    const LineQuality q = measureLineQuality(detected, truth, options());
+    EXPECT_NEAR(q.medianDistance, 0.0, 1e-12);
+    EXPECT_NEAR(q.p95Distance, 0.0, 1e-12);
+}
+
+TEST(LineQuality, SharpEdgeFoundAsSmoothIsConfused)
+{
+    // One true sharp edge; the detector finds its first half as a smooth line and misses the
+    // second half (more than the tolerance of 1.5 units away from the smooth line's end).
+    const std::vector<TypedPolyline> truth = {segment(LineType::Sharp, {0, 0, 0}, {20, 0, 0}, 2)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Smooth, {0, 0, 0}, {10, 0, 0}, 2)};
+    const LineQuality q = measureLineQuality(detected, truth, options());
+    const double asSmooth = q.confusionShare(LineType::Sharp, LineType::Smooth);
+    const double asSharp = q.confusionShare(LineType::Sharp, LineType::Sharp);
+    // Samples every 0.25 on [0, 20]: those up to 10 + 1.5 are found (smooth), the rest missed.
+    EXPECT_NEAR(asSmooth, 11.5 / 20.0, 0.02);
+    EXPECT_DOUBLE_EQ(asSharp, 0.0);
+    EXPECT_TRUE(std::isnan(q.confusionShare(LineType::Smooth, LineType::Smooth)));
+}
+
+TEST(LineQuality, FragmentsAndBoundaryLengthAreCounted)
+{
+    // A true closed square of side 20 (one edge), found as four straight pieces with gaps of
+    // 4 units (8 spacings) at the corners, plus a boundary line of 5 units on the closed part.
+    const std::vector<TypedPolyline> truth = {square(LineType::Sharp, 20.0)};
+    const std::vector<TypedPolyline> detected = {
+        segment(LineType::Sharp, {2, 0, 0}, {18, 0, 0}, 2),
+        segment(LineType::Sharp, {20, 2, 0}, {20, 18, 0}, 2),
+        segment(LineType::Sharp, {18, 20, 0}, {2, 20, 0}, 2),
+        segment(LineType::Sharp, {0, 18, 0}, {0, 2, 0}, 2),
+        segment(LineType::Boundary, {5, 5, 0}, {10, 5, 0}, 3)};
+    const LineQuality q = measureLineQuality(detected, truth, options());
+    EXPECT_DOUBLE_EQ(q.linesPerTrueEdge, 5.0);
+    // Eight sharp ends in the gaps, two boundary ends inside the face.
+    EXPECT_EQ(q.freeEnds, 10);
+    EXPECT_NEAR(q.boundaryLength, 10.0, 1e-12); // 5 units = 10 spacings
+}
