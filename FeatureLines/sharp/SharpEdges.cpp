@@ -331,8 +331,10 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     for (Eigen::Index i = 0; i < n; ++i) {
         bending[i] = s.spread(i) > supportAngle ? 1 : 0;
     }
-    const ClusterGraph graph =
-        buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label, bending);
+    ClusterGraphInput graphInput{P, N, cluster, candidate, spacing};
+    graphInput.clusterLabel = &label;
+    graphInput.supportingPoint = &bending;
+    const ClusterGraph graph = buildClusterGraph(graphInput, graphOptions);
     result.counts = graph.counts;
 
     // The points of every node, to start the search for the faces around it.
