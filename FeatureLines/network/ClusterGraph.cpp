@@ -411,6 +411,31 @@ void readOffLines(const Graph& graph, const std::vector<int>& nodeLabel,
     result.counts.freeEnds = freeEnds;
 }
 
+/// Per point its node, -1 for points of no candidate cluster.
+std::vector<int> nodeOfPoints(const Input& input, const Nodes& nodes)
+{
+    std::vector<int> nodeOfPoint(input.points(), -1);
+    for (Eigen::Index i = 0; i < input.points(); ++i) {
+        if (input.isCandidate(i)) {
+            nodeOfPoint[i] = nodes.ofCluster[input.in.cluster[i]];
+        }
+    }
+    return nodeOfPoint;
+}
+
+/// Where joins may run when the caller marks supporting points (null when it does not): along
+/// those points and the candidates.
+std::unique_ptr<Support> supportOf(const Input& input, const ClusterGraphOptions& options)
+{
+    if (input.supportingPoint.empty()) {
+        return nullptr;
+    }
+    return std::make_unique<Support>(
+        input.in.points,
+        [&](Eigen::Index i) { return input.supportingPoint[i] != 0 || input.isCandidate(i); },
+        options.supportRadius * input.in.spacing);
+}
+
 } // namespace
 
 ClusterGraph buildClusterGraph(const ClusterGraphInput& in, const ClusterGraphOptions& options)
@@ -423,18 +448,15 @@ ClusterGraph buildClusterGraph(const ClusterGraphInput& in, const ClusterGraphOp
     const double spacing = in.spacing;
     ClusterGraph result;
 
+    // Nodes: the candidate clusters gathered.
     CandidateClusters clusters;
     gatherClusterPoints(input, clusters);
     findAdjacentClusters(input, clusters);
     Nodes nodes = gatherNodes(input, clusters, options.nodeRadius * spacing);
     result.counts.nodes = static_cast<int>(nodes.centres.size());
-    result.nodeOfPoint.assign(input.points(), -1);
-    for (Eigen::Index i = 0; i < input.points(); ++i) {
-        if (input.isCandidate(i)) {
-            result.nodeOfPoint[i] = nodes.ofCluster[in.cluster[i]];
-        }
-    }
+    result.nodeOfPoint = nodeOfPoints(input, nodes);
 
+    // G_all, G_extended, G_pruned_mst.
     std::vector<std::int64_t> edges = allEdges(clusters, nodes);
     result.counts.allEdges = static_cast<int>(edges.size());
     addExtendedEdges(nodes.centres, options.extendedRadius * spacing, edges);
@@ -442,13 +464,8 @@ ClusterGraph buildClusterGraph(const ClusterGraphInput& in, const ClusterGraphOp
     Graph graph(nodes.centres, spacing);
     addPrunedSpanningForest(edges, options.maxEdgeLength * spacing, graph, result.counts);
 
-    std::unique_ptr<Support> support;
-    if (!input.supportingPoint.empty()) {
-        support = std::make_unique<Support>(
-            in.points,
-            [&](Eigen::Index i) { return input.supportingPoint[i] != 0 || input.isCandidate(i); },
-            options.supportRadius * spacing);
-    }
+    // G_pruned_branches, the reconnection and the other joins, the clean-up, the lines.
+    const std::unique_ptr<Support> support = supportOf(input, options);
     pruneBranchesAndJoinEnds(graph, nodes.label, support.get(), options, result.counts);
     cleanUpAndExtendEnds(graph, support.get(), options, result.counts);
     readOffLines(graph, nodes.label, options, result);
