@@ -189,7 +189,7 @@ Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals, cons
         }
     }
     const std::vector<char> candidate(count, 1);
-    result.network = buildClusterGraph(P, N, cluster, candidate, spacing, options.graph).network;
+    result.network = buildClusterGraph({P, N, cluster, candidate, spacing}, options.graph).network;
     return result;
 }
 

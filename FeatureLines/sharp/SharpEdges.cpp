@@ -99,9 +99,10 @@ ClusterGraph sharpGraph(const PointMatrix& P, const Neighbourhoods& N, double sp
     }
     const ClusterGraphOptions graphOptions = unplacedGraphOptions(options.graph);
     const std::vector<char> bending = bendingPoints(s);
-    const ClusterGraph graph =
-        buildClusterGraph(P, N, cluster, candidate, spacing, graphOptions, label, bending);
-    return graph;
+    ClusterGraphInput graphInput{P, N, cluster, candidate, spacing};
+    graphInput.clusterLabel = &label;
+    graphInput.supportingPoint = &bending;
+    return buildClusterGraph(graphInput, graphOptions);
 }
 
 } // namespace

@@ -1245,9 +1245,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
     // (a fillet border running from one sharp edge to another is short but complete).
     ClusterGraphOptions graphOptions = options.graph;
     graphOptions.minOpenComponentLength = 0.0;
-    const ClusterGraph graph =
-        buildClusterGraph(region.points, region.neighbours, level.clusters.cluster, candidate,
-                          region.spacing, graphOptions);
+    const ClusterGraph graph = buildClusterGraph(
+        {region.points, region.neighbours, level.clusters.cluster, candidate, region.spacing},
+        graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
     // A line must part two levels where it runs: across it, within two fit radii, the

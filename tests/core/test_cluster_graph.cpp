@@ -60,8 +60,8 @@ GraphRun runGraph(const PointMatrix& P, const ClusterGraphOptions& options = {})
         cluster[i] = static_cast<int>(i);
     }
     const double spacing = meanSpacing(N);
-    return {buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 1), spacing, options),
-            spacing};
+    const std::vector<char> candidate(P.rows(), 1);
+    return {buildClusterGraph({P, N, cluster, candidate, spacing}, options), spacing};
 }
 
 double polylineLength(const Polyline& line)
@@ -237,10 +237,10 @@ TEST(ClusterGraph, ExtensionRunsOnlyAlongSupportingPoints)
     options.extendReach = 48.0;
     const double spacing = meanSpacing(N);
     const ClusterGraph across =
-        buildClusterGraph(P, N, cluster, candidate, spacing, options, {}, gap);
+        buildClusterGraph({P, N, cluster, candidate, spacing, nullptr, &gap}, options);
     EXPECT_EQ(across.network.junctions.rows(), 1);
     const ClusterGraph refused =
-        buildClusterGraph(P, N, cluster, candidate, spacing, options, {}, none);
+        buildClusterGraph({P, N, cluster, candidate, spacing, nullptr, &none}, options);
     EXPECT_EQ(refused.network.junctions.rows(), 0);
     EXPECT_EQ(refused.counts.extensions, 0);
 }
@@ -265,7 +265,7 @@ TEST(ClusterGraph, ArcBrokenOverAGapCloses)
     ClusterGraphOptions options;
     options.extendReach = 48.0;
     const ClusterGraph g =
-        buildClusterGraph(P, N, cluster, candidate, meanSpacing(N), options, {}, gap);
+        buildClusterGraph({P, N, cluster, candidate, meanSpacing(N), nullptr, &gap}, options);
     ASSERT_EQ(g.network.lines.size(), 1u);
     EXPECT_TRUE(g.network.lines[0].closed);
     EXPECT_EQ(g.counts.freeEnds, 0);
@@ -334,7 +334,7 @@ TEST(ClusterGraph, ClustersWithoutCandidatesAreLeftOutAndLabelsCarryOver)
         candidate[i] = P(i, 0) < 0.0 ? 1 : 0;
     }
     const std::vector<int> labels(P.rows(), 7);
-    const ClusterGraph g = buildClusterGraph(P, N, cluster, candidate, meanSpacing(N), {}, labels);
+    const ClusterGraph g = buildClusterGraph({P, N, cluster, candidate, meanSpacing(N), &labels});
     ASSERT_EQ(g.network.lines.size(), 1u);
     EXPECT_EQ(g.network.lines[0].label, 7);
     EXPECT_LT(g.network.lines[0].points.col(0).maxCoeff(), 0.0);
@@ -345,24 +345,6 @@ TEST(ClusterGraph, ClustersWithoutCandidatesAreLeftOutAndLabelsCarryOver)
     }
 }
 
-TEST(ClusterGraph, ResamplingIsEvenAndKeepsTheEnds)
-{
-    PointMatrix line(3, 3);
-    line << 0, 0, 0, 4, 0, 0, 10, 0, 0;
-    const PointMatrix open = resamplePolyline(line, false, 1.0);
-    ASSERT_EQ(open.rows(), 11);
-    for (Eigen::Index i = 0; i < open.rows(); ++i) {
-        EXPECT_NEAR(open(i, 0), static_cast<double>(i), 1e-12);
-    }
-    PointMatrix square(4, 3);
-    square << 0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0;
-    const PointMatrix loop = resamplePolyline(square, true, 0.5);
-    ASSERT_EQ(loop.rows(), 16) << "perimeter 8 at step 0.5, first vertex not repeated";
-    for (Eigen::Index i = 0; i < loop.rows(); ++i) {
-        EXPECT_NEAR((loop.row((i + 1) % loop.rows()) - loop.row(i)).norm(), 0.5, 1e-12);
-    }
-}
-
 TEST(ClusterGraph, BadInputThrows)
 {
     const PointMatrix P = band(
@@ -370,17 +352,18 @@ TEST(ClusterGraph, BadInputThrows)
     const Neighbourhoods N = nearestNeighbours(P);
     const std::vector<char> candidate(P.rows(), 1);
     std::vector<int> cluster(P.rows(), 0);
-    EXPECT_THROW(buildClusterGraph(P, N, std::vector<int>(3, 0), candidate, 1.0),
-                 std::invalid_argument);
+    const std::vector<int> threeClusterIds(3, 0), twoLabels(2, 0);
+    const std::vector<char> twoFlags(2, 0), noCandidate(P.rows(), 0);
+    EXPECT_THROW(buildClusterGraph({P, N, threeClusterIds, candidate, 1.0}), std::invalid_argument);
     cluster[2] = static_cast<int>(P.rows()); // no such cluster
-    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0), std::invalid_argument);
+    EXPECT_THROW(buildClusterGraph({P, N, cluster, candidate, 1.0}), std::invalid_argument);
     cluster[2] = 0;
-    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 0.0), std::invalid_argument);
-    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, std::vector<int>(2, 0)),
+    EXPECT_THROW(buildClusterGraph({P, N, cluster, candidate, 0.0}), std::invalid_argument);
+    EXPECT_THROW(buildClusterGraph({P, N, cluster, candidate, 1.0, &twoLabels}),
                  std::invalid_argument);
-    EXPECT_THROW(buildClusterGraph(P, N, cluster, candidate, 1.0, {}, {}, std::vector<char>(2, 0)),
+    EXPECT_THROW(buildClusterGraph({P, N, cluster, candidate, 1.0, nullptr, &twoFlags}),
                  std::invalid_argument);
     // Nothing marked as candidate: an empty network, no crash.
-    const ClusterGraph none = buildClusterGraph(P, N, cluster, std::vector<char>(P.rows(), 0), 1.0);
+    const ClusterGraph none = buildClusterGraph({P, N, cluster, noCandidate, 1.0});
     EXPECT_TRUE(none.network.lines.empty());
 }
