@@ -9,10 +9,12 @@
 // curvature, as long as it spans a few cells.
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
-#include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/PointCloud.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
 
 namespace featurelines {
 
@@ -47,6 +49,12 @@ struct GridCentroids
     /// #P: per point of the input, the row of its cell's centroid.
     std::vector<int> cellOf;
 };
+
+/// Each point of P as (Morton key of its cell in the grid of cubes `cell` wide whose corner is
+/// `low`, point index), sorted by key and a cell's points by index. The caller checks that the
+/// points lie at or above `low` and within 2^21 cells of it along every axis.
+std::vector<std::pair<std::uint64_t, int>> gridCellKeys(const PointMatrix& P,
+                                                        const Eigen::RowVector3d& low, double cell);
 
 /// Averages the points of P onto a cubic grid of cells `cell` wide (length unit): one centroid
 /// per occupied cell. Throws std::invalid_argument when cell is not positive or P is empty, or

@@ -1279,8 +1279,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         dropLines(level.network, anchored, weak);
     }
     if (options.placeCoarseLines && region.curvatureScale > 1.0) {
-        placeOnCurvatureSteps(level.network, region.points, region.normals, region.curvature,
-                              region.spacing, region.curvatureScale * region.spacing, threshold,
+        placeOnCurvatureSteps(level.network,
+                              {region.points, region.normals, region.curvature, region.spacing,
+                               region.curvatureScale * region.spacing, threshold},
                               options.placement);
     }
     anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
