@@ -21,7 +21,8 @@
 #include "FeatureLines/support/IdleThreads.h"
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
-#include "FeatureLines/smooth/SmoothRegions.h"
+#include "FeatureLines/smooth/LineBand.h"
+#include "FeatureLines/smooth/RegionNeighbourhoods.h"
 
 namespace featurelines {
 
