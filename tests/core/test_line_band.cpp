@@ -3,29 +3,36 @@
 // the sampling of the lines at half the width, so the tests keep clear of the rim).
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "FeatureLines/smooth/LineBand.h"
 
 using namespace featurelines;
 
 namespace {
 
-Polyline polyline(std::initializer_list<Eigen::RowVector3d> points, bool closed)
+/// The line through the rows of V.
+Polyline polyline(PointMatrix V, bool closed)
 {
     Polyline line;
-    line.points.resize(static_cast<Eigen::Index>(points.size()), 3);
-    Eigen::Index i = 0;
-    for (const Eigen::RowVector3d& p : points) {
-        line.points.row(i++) = p;
-    }
+    line.points = std::move(V);
     line.closed = closed;
     return line;
+}
+
+/// The segment from the origin to (10, 0, 0).
+Polyline segment()
+{
+    PointMatrix V(2, 3);
+    V << 0, 0, 0, 10, 0, 0;
+    return polyline(V, false);
 }
 
 } // namespace
 
 TEST(LineBand, PointsWithinTheWidthOfASegmentAreInside)
 {
-    const LineBand band({polyline({{0, 0, 0}, {10, 0, 0}}, false)}, 1.0);
+    const LineBand band({segment()}, 1.0);
     EXPECT_FALSE(band.empty());
     EXPECT_TRUE(band.contains({5.0, 0.5, 0.0}));
     EXPECT_TRUE(band.contains({3.3, 0.0, -0.6}));
@@ -37,7 +44,9 @@ TEST(LineBand, PointsWithinTheWidthOfASegmentAreInside)
 
 TEST(LineBand, AClosedLineHasItsClosingSegment)
 {
-    const Polyline square = polyline({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}}, true);
+    PointMatrix corners(4, 3);
+    corners << 0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0;
+    const Polyline square = polyline(corners, true);
     Polyline open = square;
     open.closed = false;
     const Eigen::RowVector3d onClosingSegment(0.3, 2.0, 0.0);
@@ -60,7 +69,7 @@ TEST(LineBand, PointsNearLinesAnswersForTheListedPoints)
         5, 3, 0,    //
         0, 0, 0,    //
         9, -0.2, 0.1;
-    const std::vector<Polyline> lines = {polyline({{0, 0, 0}, {10, 0, 0}}, false)};
+    const std::vector<Polyline> lines = {segment()};
     EXPECT_EQ(pointsNearLines(P, {3, 1, 0}, lines, 1.0), (std::vector<char>{1, 0, 1}));
     EXPECT_EQ(pointsNearLines(P, {0, 3}, {}, 1.0), (std::vector<char>{0, 0}));
     EXPECT_EQ(pointsNearLines(P, {0, 3}, lines, 0.0), (std::vector<char>{0, 0}));
