@@ -38,7 +38,7 @@ struct LinePlacementOptions
     int medianHalfWindow = 2;
 };
 
-/// The region the lines were found in.
+/// The region the lines were found in (references: what they name must outlive the struct).
 struct LinePlacementInput
 {
     /// #P by 3 region points.

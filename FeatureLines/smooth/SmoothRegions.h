@@ -21,7 +21,7 @@ struct SmoothRegionOptions
     int minRegionPoints = 0;
 };
 
-/// The cloud and what divides it.
+/// The cloud and what divides it (references: what they name must outlive the struct).
 struct SmoothRegionInput
 {
     /// #P by 3 points.
