@@ -18,6 +18,7 @@
 #include "FeatureLines/support/IdleThreads.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/RegionNeighbourhoods.h"
 
 namespace featurelines {
 
@@ -275,8 +276,9 @@ RegionAnalysis analyseRegionsOf(const CloudGeometry& cloud, Neighbourhoods* spar
         }
     }
     report(options.progress, 0.5, "smooth regions");
-    a.regions = divideSmoothRegions(cloud.points, cloud.neighbours, sharpLines,
-                                    a.sharp.isSharpCandidate, cloud.spacing, options.regions);
+    a.regions = divideSmoothRegions(
+        {cloud.points, cloud.neighbours, sharpLines, a.sharp.isSharpCandidate, cloud.spacing},
+        options.regions);
     if (options.smoothEdges) {
         for (int r = 0; r < a.regions.count(); ++r) {
             report(options.progress, 0.5 + 0.3 * r / a.regions.count(),

@@ -171,11 +171,11 @@ typedef double DoublePair __attribute__((vector_size(16)));
 bool solveQuadric(const double (&s)[14], const double (&r)[6], double rows, double (&c)[6])
 {
     // Upper triangle of A^T A row by row, rows and columns (x^2, xy, y^2, x, y, 1).
-    const double m[21] = {s[0],   s[1],  s[2],  s[5],  s[6],  s[9], //
-                          s[2],   s[3],  s[6],  s[7],  s[10],       //
-                          s[4],   s[7],  s[8],  s[11],              //
-                          s[9],   s[10], s[12],                     //
-                          s[11],  s[13],                            //
+    const double m[21] = {s[0],  s[1],  s[2],  s[5],  s[6],  s[9], //
+                          s[2],  s[3],  s[6],  s[7],  s[10],       //
+                          s[4],  s[7],  s[8],  s[11],              //
+                          s[9],  s[10], s[12],                     //
+                          s[11], s[13],                            //
                           rows};
     return solveNormalEquations(m, r, c);
 }
@@ -203,6 +203,69 @@ double curvatureFromSums(const double (&s)[14], const double (&r)[6], int k, dou
     return std::isfinite(value) ? value : 0.0;
 }
 
+/// The neighbours in the fit: options.k, or all N.k() of them for 0.
+int neighboursInFit(const CurvatureOptions& options, const Neighbourhoods& N)
+{
+    return options.k == 0 ? N.k() : options.k;
+}
+
+/// What each point's fit reads.
+struct CurvatureFit
+{
+    const PointMatrix& P;
+    const NormalMatrix& normals;
+    const Neighbourhoods& N;
+    /// Neighbours in the fit.
+    int k;
+    bool signedCurvature;
+};
+
+/// The mean curvature of point i in frame f (0 where the frame is not valid).
+double curvatureOfOne(const CurvatureFit& fit, Eigen::Index i, const Frame& f)
+{
+    if (!f.valid) {
+        return 0.0;
+    }
+    const Sums<double> sums = sumsOf(fit.P, fit.N, i, fit.k, f);
+    return curvatureFromSums(sums.s, sums.r, fit.k, f.scale, fit.signedCurvature);
+}
+
+/// The mean curvature of points i and i + 1 in their valid frames f0 and f1, into H[0], H[1]:
+/// the sums of both in the two lanes of a pair of doubles.
+void curvatureOfPair(const CurvatureFit& fit, Eigen::Index i, const Frame& f0, const Frame& f1,
+                     double* H)
+{
+    DoublePair u[3], v[3], w[3];
+    for (int d = 0; d < 3; ++d) {
+        u[d] = DoublePair{f0.u[d], f1.u[d]};
+        v[d] = DoublePair{f0.v[d], f1.v[d]};
+        w[d] = DoublePair{f0.w[d], f1.w[d]};
+    }
+    const PointMatrix& P = fit.P;
+    Sums<DoublePair> sums;
+    const double* o0 = P.row(i).data();
+    const double* o1 = P.row(i + 1).data();
+    const int* n0 = fit.N.indices.row(i).data();
+    const int* n1 = fit.N.indices.row(i + 1).data();
+    for (int j = 0; j < fit.k; ++j) {
+        const double* p0 = P.row(n0[j]).data();
+        const double* p1 = P.row(n1[j]).data();
+        sums.add(DoublePair{p0[0] - o0[0], p1[0] - o1[0]}, DoublePair{p0[1] - o0[1], p1[1] - o1[1]},
+                 DoublePair{p0[2] - o0[2], p1[2] - o1[2]}, u, v, w);
+    }
+    for (int lane = 0; lane < 2; ++lane) {
+        double s[14], r[6];
+        for (int t = 0; t < 14; ++t) {
+            s[t] = sums.s[t][lane];
+        }
+        for (int t = 0; t < 6; ++t) {
+            r[t] = sums.r[t][lane];
+        }
+        H[lane] =
+            curvatureFromSums(s, r, fit.k, lane == 0 ? f0.scale : f1.scale, fit.signedCurvature);
+    }
+}
+
 } // namespace
 
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
@@ -214,7 +277,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
                                     ") and neighbourhoods (" + std::to_string(N.size()) +
                                     ") must describe the same cloud");
     }
-    const int k = options.k == 0 ? N.k() : options.k;
+    const int k = neighboursInFit(options, N);
     if (k < minimumNeighbours || k > N.k()) {
         throw std::invalid_argument(
             "mean curvature: the quadric fit needs between " + std::to_string(minimumNeighbours) +
@@ -224,58 +287,22 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     const Eigen::Index n = P.rows();
     Eigen::VectorXd H(n);
     // Sec. 2.1: curv(p) from a quadric through the k nearest neighbours of p, here the height
-    // function over p's tangent plane, origin at p, axes (u, v, n). Two points at a time: the
-    // sums of both in the two lanes of a pair of doubles.
-    const auto one = [&](Eigen::Index i, const Frame& f) {
-        if (!f.valid) {
-            H(i) = 0.0;
-            return;
-        }
-        const Sums<double> sums = sumsOf(P, N, i, k, f);
-        H(i) = curvatureFromSums(sums.s, sums.r, k, f.scale, options.signedCurvature);
-    };
+    // function over p's tangent plane, origin at p, axes (u, v, n). Two points at a time.
+    const CurvatureFit fit{P, normals, N, k, options.signedCurvature};
     const Eigen::Index pairs = n / 2;
 #pragma omp parallel for schedule(static, 2048) num_threads(threadCount(options.threads))
     for (Eigen::Index pair = 0; pair < pairs; ++pair) {
         const Eigen::Index i = 2 * pair;
         const Frame f0 = frameOf(normals, N, i, k), f1 = frameOf(normals, N, i + 1, k);
         if (!f0.valid || !f1.valid) {
-            one(i, f0);
-            one(i + 1, f1);
+            H(i) = curvatureOfOne(fit, i, f0);
+            H(i + 1) = curvatureOfOne(fit, i + 1, f1);
             continue;
         }
-        DoublePair u[3], v[3], w[3];
-        for (int d = 0; d < 3; ++d) {
-            u[d] = DoublePair{f0.u[d], f1.u[d]};
-            v[d] = DoublePair{f0.v[d], f1.v[d]};
-            w[d] = DoublePair{f0.w[d], f1.w[d]};
-        }
-        Sums<DoublePair> sums;
-        const double* o0 = P.row(i).data();
-        const double* o1 = P.row(i + 1).data();
-        const int* n0 = N.indices.row(i).data();
-        const int* n1 = N.indices.row(i + 1).data();
-        for (int j = 0; j < k; ++j) {
-            const double* p0 = P.row(n0[j]).data();
-            const double* p1 = P.row(n1[j]).data();
-            sums.add(DoublePair{p0[0] - o0[0], p1[0] - o1[0]},
-                     DoublePair{p0[1] - o0[1], p1[1] - o1[1]},
-                     DoublePair{p0[2] - o0[2], p1[2] - o1[2]}, u, v, w);
-        }
-        for (int lane = 0; lane < 2; ++lane) {
-            double s[14], r[6];
-            for (int t = 0; t < 14; ++t) {
-                s[t] = sums.s[t][lane];
-            }
-            for (int t = 0; t < 6; ++t) {
-                r[t] = sums.r[t][lane];
-            }
-            H(i + lane) = curvatureFromSums(s, r, k, lane == 0 ? f0.scale : f1.scale,
-                                            options.signedCurvature);
-        }
+        curvatureOfPair(fit, i, f0, f1, H.data() + i);
     }
     if (n % 2 == 1) {
-        one(n - 1, frameOf(normals, N, n - 1, k));
+        H(n - 1) = curvatureOfOne(fit, n - 1, frameOf(normals, N, n - 1, k));
     }
     return H;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Mean curvature by a quadric fitted over each point's k nearest neighbours (Sec. 2.1).
+// Design: docs/design/curvature.md, "Mean curvature".
 #pragma once
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
@@ -8,17 +9,20 @@ namespace featurelines {
 
 struct CurvatureOptions
 {
-    /// Neighbours in the fit, at most Neighbourhoods::k() (0: all of them).
+    /// Neighbours in the fit, at most Neighbourhoods::k(); 0: all of them. Default 0.
     int k = 0;
-    /// false: |H|, so concave and convex blends of one radius fall in one histogram peak.
+    /// true: H signed along the normal; false: |H|, concave and convex blends alike. Default
+    /// false.
     bool signedCurvature = false;
+    /// Threads; 0: OpenMP's default. Default 0.
     int threads = 0;
 };
 
 /// H  #P mean curvature (1 / length unit) of the height function
 /// z = a x^2 + b xy + c y^2 + d x + e y + f fitted by least squares in the frame of each point's
 /// normal. A sphere of radius r gives 1/r, a cylinder 1/(2r), a plane 0. When signed, the sign
-/// follows the given normal (positive where the surface bends away from it).
+/// follows the given normal (positive where the surface bends away from it); 0 where the fit is
+/// degenerate. Throws std::invalid_argument for sizes that disagree or k outside [5, N.k()].
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
                               const Neighbourhoods& N, const CurvatureOptions& options = {});
 

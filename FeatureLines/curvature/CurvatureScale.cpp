@@ -14,6 +14,26 @@
 
 namespace featurelines {
 
+std::vector<std::pair<std::uint64_t, int>> gridCellKeys(const PointMatrix& P,
+                                                        const Eigen::RowVector3d& low, double cell)
+{
+    // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
+    // the cells along the Z curve. The point index breaks ties, so the result is deterministic.
+    const Eigen::Index n = P.rows();
+    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        std::uint64_t c[3];
+        for (int d = 0; d < 3; ++d) {
+            c[d] = static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
+        }
+        keyed[static_cast<size_t>(i)] = {mortonKey(c[0], c[1], c[2]), static_cast<int>(i)};
+    }
+    // Stable: the pairs come in index order, so this is their order by (key, index).
+    sortByMortonKey(keyed);
+    return keyed;
+}
+
 GridCentroids gridCentroids(const PointMatrix& P, double cell)
 {
     if (!(cell > 0.0) || !std::isfinite(cell)) {
@@ -28,20 +48,7 @@ GridCentroids gridCentroids(const PointMatrix& P, double cell)
     if (!(cells.maxCoeff() < static_cast<double>(1 << mortonBitsPerAxis))) {
         throw std::invalid_argument("grid centroids: the cloud spans too many cells");
     }
-    // Each point's cell as a Morton key; sorting the keys groups a cell's points and orders
-    // the cells along the Z curve. The point index breaks ties, so the result is deterministic.
-    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<size_t>(n));
-#pragma omp parallel for schedule(static, 4096)
-    for (Eigen::Index i = 0; i < n; ++i) {
-        std::uint64_t c[3];
-        for (int d = 0; d < 3; ++d) {
-            c[d] = static_cast<std::uint64_t>(std::floor((P(i, d) - low[d]) / cell));
-        }
-        keyed[static_cast<size_t>(i)] = {mortonKey(c[0], c[1], c[2]), static_cast<int>(i)};
-    }
-    // Stable: the pairs come in index order, so this is their order by (key, index).
-    sortByMortonKey(keyed);
-
+    const std::vector<std::pair<std::uint64_t, int>> keyed = gridCellKeys(P, low, cell);
     GridCentroids grid;
     grid.cellOf.resize(static_cast<size_t>(n));
     std::vector<Eigen::RowVector3d> sums;
@@ -79,8 +86,8 @@ double planeDeviation(const PointMatrix& P, double share)
         distance[static_cast<size_t>(i)] = std::abs((P.row(i) - moments.mean).dot(normal));
     }
     const auto at = distance.begin() +
-                    std::min<Eigen::Index>(n - 1, static_cast<Eigen::Index>(
-                                                      std::floor((1.0 - share) * (n - 1))));
+                    std::min<Eigen::Index>(
+                        n - 1, static_cast<Eigen::Index>(std::floor((1.0 - share) * (n - 1))));
     std::nth_element(distance.begin(), at, distance.end());
     return *at;
 }

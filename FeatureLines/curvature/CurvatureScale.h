@@ -1,41 +1,35 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// A smooth region's curvature at a coarser scale than the cloud's sampling (beyond the 2008
-// paper). The quadric fit of Sec. 2.1 over k neighbours turns noise of n spacings into a
-// curvature spread proportional to n / spacing, while a fillet of radius r has |H| = 1 / (2 r):
-// the denser a noisy scan, the more fillet radii lie below the noise (a 6 mm fillet scanned at
-// 0.16 mm with noise of 0.05 mm shows 3 noise floors above a flat face, too few to part the
-// levels). Averaged onto a grid of cells s spacings wide, the same points carry 1 / s of the
-// noise at s times the spacing, so the spread falls as 1 / s^3 while the fillet keeps its
-// curvature, as long as it spans a few cells.
+// A smooth region's curvature at a coarser scale than the cloud's sampling, where noise hides
+// its fillets (beyond the paper): the points averaged onto a grid and the values carried back.
+// Design: docs/design/curvature.md, "Curvature scale".
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
-#include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/PointCloud.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
 
 namespace featurelines {
 
 struct CurvatureScaleOptions
 {
-    /// Coarsest scale tried (x spacing): the scales are 1, 2, 4, ... up to this. 1 computes
-    /// the curvature at the cloud's own sampling only, as the paper does.
+    /// Coarsest scale tried, x spacing: the scales are 1, 2, 4, ... up to this; 1: the cloud's
+    /// own sampling only, as the paper. Default 8.
     double maxScale = 8.0;
-    /// A coarser scale is tried only while the region averages into at least this many cells:
-    /// its histogram and its patches (SmoothEdgeOptions::automatic) need a few thousand values.
+    /// A coarser scale is tried only while the region averages into at least this many cells.
+    /// Default 2000.
     int minPoints = 2000;
-    /// x the coarse spacing: how far from the rim of a coarse region its curvature is taken
-    /// from the region's interior instead of the one-sided fits there (the bias of the fit
-    /// and of the smoothing at a rim reaches about three spacings in).
+    /// Width of a coarse region's rim whose curvature is taken from its interior, x the coarse
+    /// spacing. Default 4.
     double rimWidth = 4.0;
-    /// Width of the Gaussian that carries the coarse curvature back to the points, x the
-    /// coarse sampling's spacing: wide enough that the values vary smoothly from cell to cell
-    /// (a threshold then crosses between points, not on the grid), narrow against the fit.
+    /// Standard deviation of the Gaussian carrying the coarse curvature back to the points, x
+    /// the coarse spacing. Default 0.5.
     double carryWidth = 0.5;
-    /// x the region's noise estimate (RegionGeometry::noise, spacings): a region whose points,
-    /// all but a thousandth, lie this close to one plane (planeDeviation) is a face; it has
-    /// no curvature level above noise to find at any scale, and no coarser scale is tried.
-    /// 0 tries them on faces too.
+    /// A region within this distance of one plane (all but a thousandth of its points; x the
+    /// region's noise estimate, RegionGeometry::noise) is a face and tries no coarser scale;
+    /// 0: faces try them too. Default 6.
     double planeTolerance = 6.0;
 };
 
@@ -47,6 +41,12 @@ struct GridCentroids
     /// #P: per point of the input, the row of its cell's centroid.
     std::vector<int> cellOf;
 };
+
+/// Each point of P as (Morton key of its cell in the grid of cubes `cell` wide whose corner is
+/// `low`, point index), sorted by key and a cell's points by index. The caller checks that the
+/// points lie at or above `low` and within 2^21 cells of it along every axis.
+std::vector<std::pair<std::uint64_t, int>> gridCellKeys(const PointMatrix& P,
+                                                        const Eigen::RowVector3d& low, double cell);
 
 /// Averages the points of P onto a cubic grid of cells `cell` wide (length unit): one centroid
 /// per occupied cell. Throws std::invalid_argument when cell is not positive or P is empty, or

@@ -73,10 +73,7 @@ void umbrellaStep(const double* from, double* to, const int* neighbours, int k, 
     }
 }
 
-} // namespace
-
-PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
-                            const std::vector<int>& subset, const SmoothingOptions& options)
+void checkInput(const PointMatrix& P, const Neighbourhoods& N, const SmoothingOptions& options)
 {
     if (N.size() != P.rows()) {
         throw std::invalid_argument("smoothing: the neighbourhoods were computed for another "
@@ -87,7 +84,11 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
     if (options.iterations < 0 || !std::isfinite(options.lambda) || !std::isfinite(options.mu)) {
         throw std::invalid_argument("smoothing: iterations must be >= 0 and lambda, mu finite");
     }
-    const Eigen::Index n = P.rows();
+}
+
+/// #n: nonzero for the points of `subset`. Throws for an index outside [0, n) or listed twice.
+std::vector<char> subsetFlags(const std::vector<int>& subset, Eigen::Index n)
+{
     std::vector<char> inSubset(n, 0);
     for (const int i : subset) {
         if (i < 0 || i >= n) {
@@ -101,67 +102,101 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
         }
         inSubset[i] = 1;
     }
+    return inSubset;
+}
 
-    // Sec. 2.4: the region holds no sharp edge, so its points are smoothed among themselves;
-    // neighbours outside it (across a sharp edge) are left out of the umbrella.
-    const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
-    // The subset of all points in row order (a whole region) needs no copying back, and its
-    // umbrellas are the neighbourhoods themselves (every neighbour is in the subset).
-    bool everyRow = m == n && N.k() > 0;
-    for (Eigen::Index s = 0; s < m && everyRow; ++s) {
-        everyRow = subset[s] == s;
-    }
+/// Each subset point's umbrella: its neighbours in the subset (Sec. 2.4: the region holds no
+/// sharp edge, so its points are smoothed among themselves; neighbours outside it, across a
+/// sharp edge, are left out).
+struct Umbrellas
+{
+    /// The subset is every point in row order (a whole region): the umbrellas are the
+    /// neighbourhoods themselves (every neighbour is in the subset) and need no copying back.
+    bool everyRow = false;
+    /// Then: the neighbourhoods' rows of k indices each.
+    const int* rows = nullptr;
+    int k = 0;
+    /// Otherwise subset point s's umbrella is members[offsets[s] .. offsets[s + 1]).
     std::vector<int> offsets;
     std::vector<int> members;
-    if (!everyRow) {
-        offsets.assign(static_cast<size_t>(m) + 1, 0);
-        members.reserve(m * N.k());
+};
+
+Umbrellas umbrellasOf(const Neighbourhoods& N, const std::vector<int>& subset,
+                      const std::vector<char>& inSubset)
+{
+    const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
+    Umbrellas u;
+    u.everyRow = m == N.size() && N.k() > 0;
+    for (Eigen::Index s = 0; s < m && u.everyRow; ++s) {
+        u.everyRow = subset[s] == s;
+    }
+    u.rows = N.indices.data();
+    u.k = N.k();
+    if (!u.everyRow) {
+        u.offsets.assign(static_cast<size_t>(m) + 1, 0);
+        u.members.reserve(m * N.k());
         for (Eigen::Index s = 0; s < m; ++s) {
             const int i = subset[s];
             for (int j = 0; j < N.k(); ++j) {
                 if (inSubset[N.indices(i, j)]) {
-                    members.push_back(N.indices(i, j));
+                    u.members.push_back(N.indices(i, j));
                 }
             }
-            offsets[s + 1] = static_cast<int>(members.size());
+            u.offsets[s + 1] = static_cast<int>(u.members.size());
         }
     }
-    const int* umbrella = everyRow ? N.indices.data() : members.data();
+    return u;
+}
 
-    PointMatrix current(n, 3), moved(m, 3);
+/// One umbrella step for every subset point from the same positions (Jacobi), so the result
+/// does not depend on the order of `subset`: p += factor * (mean of its umbrella - p). `moved`
+/// is a #subset by 3 buffer.
+void jacobiStep(PointMatrix& current, PointMatrix& moved, const std::vector<int>& subset,
+                const Umbrellas& umbrellas, double factor)
+{
+    const Eigen::Index m = static_cast<Eigen::Index>(subset.size());
+    if (umbrellas.everyRow) {
+        const double* from = current.data();
+        double* to = moved.data();
+        const Eigen::Index blocks = (m + 4095) / 4096;
+#pragma omp parallel for schedule(static, 1)
+        for (Eigen::Index b = 0; b < blocks; ++b) {
+            umbrellaStep(from, to, umbrellas.rows, umbrellas.k, factor, b * 4096,
+                         std::min(m, (b + 1) * 4096));
+        }
+        current.swap(moved); // every row moved
+        return;
+    }
+    const int* umbrella = umbrellas.members.data();
+    const std::vector<int>& offsets = umbrellas.offsets;
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index s = 0; s < m; ++s) {
+        umbrellaRow(current.data(), moved.data(), subset[s], s, umbrella + offsets[s],
+                    offsets[s + 1] - offsets[s], factor);
+    }
+#pragma omp parallel for schedule(static, 4096)
+    for (Eigen::Index s = 0; s < m; ++s) {
+        current.row(subset[s]) = moved.row(s);
+    }
+}
+
+} // namespace
+
+PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
+                            const std::vector<int>& subset, const SmoothingOptions& options)
+{
+    checkInput(P, N, options);
+    const Eigen::Index n = P.rows();
+    const Umbrellas umbrellas = umbrellasOf(N, subset, subsetFlags(subset, n));
+    PointMatrix current(n, 3), moved(static_cast<Eigen::Index>(subset.size()), 3);
     adviseHugePagesOf(current);
     adviseHugePagesOf(moved);
     current = P;
-    // One umbrella step for every subset point from the same positions (Jacobi), so the
-    // result does not depend on the order of `subset`: p += factor * (mean of neighbours - p).
-    auto step = [&](double factor) {
-        if (everyRow) {
-            const double* from = current.data();
-            double* to = moved.data();
-            const Eigen::Index blocks = (m + 4095) / 4096;
-#pragma omp parallel for schedule(static, 1)
-            for (Eigen::Index b = 0; b < blocks; ++b) {
-                umbrellaStep(from, to, umbrella, N.k(), factor, b * 4096,
-                             std::min(m, (b + 1) * 4096));
-            }
-            current.swap(moved); // every row moved
-            return;
-        }
-#pragma omp parallel for schedule(static, 4096)
-        for (Eigen::Index s = 0; s < m; ++s) {
-            umbrellaRow(current.data(), moved.data(), subset[s], s, umbrella + offsets[s],
-                        offsets[s + 1] - offsets[s], factor);
-        }
-#pragma omp parallel for schedule(static, 4096)
-        for (Eigen::Index s = 0; s < m; ++s) {
-            current.row(subset[s]) = moved.row(s);
-        }
-    };
     for (int iteration = 0; iteration < options.iterations; ++iteration) {
         // Taubin (1995): a shrinking step lambda > 0 then an inflating step mu < -lambda.
-        step(options.lambda);
+        jacobiStep(current, moved, subset, umbrellas, options.lambda);
         if (options.mu != 0.0) {
-            step(options.mu);
+            jacobiStep(current, moved, subset, umbrellas, options.mu);
         }
     }
     return current;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Laplacian smoothing of a subset of the cloud (Sec. 2.4), used per smooth region before its
-// curvature histogram is built.
+// curvature histogram is built. Design: docs/design/curvature.md, "Smoothing".
 #pragma once
 
 #include <vector>
@@ -11,18 +11,19 @@ namespace featurelines {
 
 struct SmoothingOptions
 {
-    /// Smoothing passes; 0 leaves the points where they are.
+    /// Smoothing passes; 0 leaves the points where they are. Default 5.
     int iterations = 5;
-    /// Taubin's lambda|mu pair: each pass moves a point by lambda times its Laplacian, then by
-    /// mu times the new Laplacian, which removes noise without the shrinkage (and curvature
-    /// bias) of plain Laplacian smoothing. mu = 0 gives plain Laplacian smoothing.
+    /// Taubin's shrinking step: x the Laplacian, per pass. Default 0.5.
     double lambda = 0.5;
+    /// Taubin's inflating step after it (< -lambda); 0: plain Laplacian smoothing. Default -0.53.
     double mu = -0.53;
 };
 
 /// Returns P with the points of `subset` smoothed; points outside it are copied unchanged and
 /// never act as neighbours, so a smooth region is not pulled over its sharp edges.
-/// `subset` holds point indices (any order, no duplicates).
+/// `subset` holds point indices (any order, no duplicates). Throws std::invalid_argument for
+/// neighbourhoods of another cloud, an index outside the cloud or listed twice, or options out of
+/// range.
 PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
                             const std::vector<int>& subset, const SmoothingOptions& options = {});
 

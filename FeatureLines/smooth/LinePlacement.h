@@ -1,83 +1,68 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Placement of smooth lines on the surface's own curvature step (beyond the paper). Where a
-// region's curvature had to be read at a coarser scale (CurvatureScale.h), its lines follow the
-// coarse field, which places them up to a few of the cloud's spacings off the true fillet
-// border. The border is where the surface's curvature across the line jumps while the surface
-// stays tangent-continuous: across the line the height over the tangent plane is straight on
-// one side (a face, or a cylinder along its axis) and a parabola on the other, joined with the
-// same value and slope. Fitted by least squares to the region's points in a strip across the
-// line, that profile gives the border to about a spacing: the fit uses the positions of
-// hundreds of points, not a derivative of them.
+// Smooth lines found at a coarse curvature scale moved across onto the curvature step in the
+// points under them (beyond the paper). Design: docs/design/line-placement.md.
 #pragma once
 
-#include "FeatureLines/network/ClusterGraph.h"
 #include "FeatureLines/PointCloud.h"
+#include "FeatureLines/network/ClusterGraph.h"
 
 namespace featurelines {
 
-/// Lengths are multiples of the curvature's spacing (the region's spacing x its curvature
-/// scale, the resolution the line was found at) unless stated otherwise.
+/// Lengths are in fit spacings (LinePlacementInput::fitSpacing) unless stated otherwise.
 struct LinePlacementOptions
 {
-    /// Half the width of the strip across the line whose points are fitted, at least. Three fit
-    /// spacings reach past the line's uncertainty onto both surfaces.
+    /// Least half width of the strip across the line whose points are fitted. Default 3.
     double halfWidth = 3.0;
-    /// The strip is widened to this share of the radius of the fillet the line borders, when
-    /// that is wider: the border is placed to about noise / (curvature step x width^1.5 x
-    /// length^0.5), so the widest strip the profile's parabola holds is the most precise. The
-    /// radius is that of a cylinder whose |H| = 1 / (2 r) lies twice above the threshold,
-    /// r = 1 / (4 tau) (a threshold in the middle of its valley lies half-way between a face's
-    /// curvature and the fillet's). Over 0.4 r a circle departs from its parabola by 4 %.
+    /// The strip's half width grows to this share of the radius of the fillet the line borders
+    /// (r = 1 / (4 threshold)) where that is wider. Share of r; default 0.4.
     double radiusShare = 0.4;
-    /// Half the strip's length along the line, at least: it is made as long as the strip is
-    /// wide (above), which costs no resolution across. Two fit spacings: a border curving
-    /// with a radius of 20 fit spacings departs from its tangent by 0.1 of one at the ends.
+    /// Least half length of the strip along the line (it is made at least as long as wide).
+    /// Default 2.
     double halfLength = 2.0;
-    /// The farthest a vertex moves across its line, x the strip's half width: the border
-    /// then keeps at least half the strip on its far side. The coarse field can leave a line
-    /// several fit spacings off (a shoulder of its level reaching into the face); a border
-    /// found farther off lies outside what one strip can place (see recentres).
+    /// Farthest shift of a vertex per strip, x the strip's half width. Default 0.5.
     double maxShift = 0.5;
-    /// Where the best border lies on the edge of that range (the coarse field left the line
-    /// farther off), the strip is centred on the edge and fitted again, at most this many
-    /// times: a vertex can move up to (1 + recentres) x maxShift x the half width. A surface of
-    /// one curvature across (a cylinder across, a sphere) keeps putting the border on the edge
-    /// and its vertex stays where it was. 0: one strip only.
+    /// Strips re-centred on the edge of that range, at most, when the border lies beyond it;
+    /// 0: one strip only. Default 2.
     int recentres = 2;
-    /// x the region's own spacing: the step of the border positions tried.
+    /// Step of the border positions tried, x the region's own spacing. Default 0.25.
     double step = 0.25;
-    /// How much better the tangent-continuous pair of a straight side and a parabola must fit
-    /// than the straight side alone: the drop in the residual sum of squares, in units of the
-    /// residual variance (a chi-square with one degree of freedom; the best of the positions
-    /// tried, so more than the 9 of a single 3-sigma test: 25, a 5-sigma step).
+    /// Drop in the residual sum of squares a border must bring over no border, in residual
+    /// variances (chi-square, one degree of freedom). Default 25 (5 sigma).
     double minEvidence = 25.0;
-    /// Least number of points on each side of a border position.
+    /// Least number of points on each side of a border position. Default 12.
     int minPointsPerSide = 12;
-    /// x the strip's half length: the distance along the line between two vertices fitted;
-    /// the vertices between move by the two's displacements, weighed by arc length. Strips of
-    /// neighbouring vertices would hold nearly the same points.
+    /// Distance along the line between two fitted vertices, x the strip's half length; the
+    /// vertices between move by interpolation. Default 0.5.
     double fitStride = 0.5;
-    /// Fitted vertices on each side whose shifts enter the median a vertex is moved by: a shift
-    /// must agree with its neighbours' along the line.
+    /// Fitted vertices on each side whose shifts enter the median a vertex moves by. Default 2.
     int medianHalfWindow = 2;
 };
 
+/// The region the lines were found in (references: what they name must outlive the struct).
+struct LinePlacementInput
+{
+    /// #P by 3 region points.
+    const PointMatrix& points;
+    /// #P by 3 their unit normals (unoriented).
+    const NormalMatrix& normals;
+    /// Empty, or #P the points' mean curvature (the values the lines were drawn on): where
+    /// given, a strip narrows to radiusShare of the radius of the fillet its high side shows.
+    const Eigen::VectorXd& curvature;
+    /// The region's mean point spacing (length unit).
+    double spacing;
+    /// The spacing the lines were found at, >= spacing (length unit).
+    double fitSpacing;
+    /// The curvature threshold the lines part (|H|, 1 / length unit); 0: unknown, the strip
+    /// keeps halfWidth.
+    double threshold;
+};
+
 /// Moves the inner vertices of every line of `network` across the line onto the curvature
-/// step found in the points under it (see above); vertices where no step is found with the
-/// evidence asked, and the two end vertices of an open line (a junction or an anchor), stay.
-///   P, N        #P by 3 region points and their unit normals (unoriented)
-///   curvature   empty, or #P the points' mean curvature (the values the line was drawn on):
-///               where given, a strip is narrowed to radiusShare of the radius of the fillet
-///               the points on the line's high side show (1 / (2 |H|), |H| their lower
-///               quartile) when that is smaller than the threshold's
-///   spacing     the region's mean point spacing
-///   fitSpacing  the spacing the line was found at (>= spacing)
-///   threshold   the curvature threshold the line parts (|H|, 1 / length unit; 0: unknown,
-///               the strip keeps its width in fit spacings)
-/// Returns the number of vertices moved. Throws std::invalid_argument for sizes that disagree,
-/// a spacing that is not positive, or options out of range.
-int placeOnCurvatureSteps(LineNetwork& network, const PointMatrix& P, const NormalMatrix& N,
-                          const Eigen::VectorXd& curvature, double spacing, double fitSpacing,
-                          double threshold, const LinePlacementOptions& options = {});
+/// step found in the points under it; vertices where no step is found with the evidence asked,
+/// and the two end vertices of an open line (a junction or an anchor), stay. Returns the number
+/// of vertices moved. Throws std::invalid_argument for sizes that disagree, a spacing that is
+/// not positive, or options out of range.
+int placeOnCurvatureSteps(LineNetwork& network, const LinePlacementInput& input,
+                          const LinePlacementOptions& options = {});
 
 } // namespace featurelines

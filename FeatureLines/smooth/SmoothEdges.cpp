@@ -21,7 +21,8 @@
 #include "FeatureLines/support/IdleThreads.h"
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
-#include "FeatureLines/smooth/SmoothRegions.h"
+#include "FeatureLines/smooth/LineBand.h"
+#include "FeatureLines/smooth/RegionNeighbourhoods.h"
 
 namespace featurelines {
 
@@ -1279,8 +1280,9 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         dropLines(level.network, anchored, weak);
     }
     if (options.placeCoarseLines && region.curvatureScale > 1.0) {
-        placeOnCurvatureSteps(level.network, region.points, region.normals, region.curvature,
-                              region.spacing, region.curvatureScale * region.spacing, threshold,
+        placeOnCurvatureSteps(level.network,
+                              {region.points, region.normals, region.curvature, region.spacing,
+                               region.curvatureScale * region.spacing, threshold},
                               options.placement);
     }
     anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,

@@ -12,8 +12,8 @@
 #include <set>
 #include <string>
 
-#include "FeatureLines/curvature/CurvatureScale.h"
 #include "FeatureLines/Extraction.h"
+#include "FeatureLines/curvature/CurvatureScale.h"
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/smooth/SmoothEdges.h"
 #include "SampledShapes.h"
@@ -60,6 +60,23 @@ TEST(CurvatureScale, GridCentroidsAreTheMeansOfTheirCells)
     }
     EXPECT_THROW(gridCentroids(P, 0.0), std::invalid_argument);
     EXPECT_THROW(gridCentroids(PointMatrix(0, 3), 1.0), std::invalid_argument);
+}
+
+// Points keyed by their grid cell: one key per cell, cells in Morton order, a cell's points in
+// index order.
+TEST(CurvatureScale, GridCellKeysGroupACellsPointsInIndexOrder)
+{
+    PointMatrix P(5, 3);
+    P << 1.5, 0.2, 0.1, // cell (1, 0, 0)
+        0.1, 0.1, 0.1,  // cell (0, 0, 0)
+        1.9, 0.9, 0.5,  // cell (1, 0, 0)
+        0.2, 1.2, 0.0,  // cell (0, 1, 0)
+        0.9, 0.0, 0.9;  // cell (0, 0, 0)
+    const auto keyed = gridCellKeys(P, Eigen::RowVector3d::Zero(), 1.0);
+    ASSERT_EQ(keyed.size(), 5u);
+    const std::vector<std::pair<std::uint64_t, int>> expected = {
+        {0, 1}, {0, 4}, {1, 0}, {1, 2}, {2, 3}}; // Morton keys: x bit 0, y bit 1
+    EXPECT_EQ(keyed, expected);
 }
 
 TEST(CurvatureScale, CarriedValuesFollowTheCoarseField)
@@ -113,8 +130,8 @@ TEST(CurvatureScale, PlaneDeviationIsTheNoiseOfAPlaneAndTheBulgeOfACylinder)
     // A tilted copy: the plane is fitted, not assumed to be z = 0.
     const Eigen::Matrix3d turn =
         (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 0.5).normalized())).toRotationMatrix();
-    const PointMatrix tilted = (plane.points * turn.transpose()).rowwise() +
-                               Eigen::RowVector3d(3.0, -2.0, 5.0);
+    const PointMatrix tilted =
+        (plane.points * turn.transpose()).rowwise() + Eigen::RowVector3d(3.0, -2.0, 5.0);
     EXPECT_NEAR(planeDeviation(tilted, 0.001), 3.29 * sigma, 0.3 * sigma);
     EXPECT_NEAR(planeDeviation(tilted, 0.3173), sigma, 0.05 * sigma) << "one standard deviation";
     EXPECT_NEAR(planeDeviation(tilted, 0.0), plane.points.col(2).cwiseAbs().maxCoeff(),

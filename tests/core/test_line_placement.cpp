@@ -87,8 +87,8 @@ TEST(LinePlacement, VerticesComeOntoTheFilletBorder)
         for (double offset : {-5.0, 5.0}) {
             LineNetwork network = networkOf(lineAlongY(offset, 0.0, 30.0, 1.5));
             const PointMatrix before = network.lines[0].points;
-            const int moved = placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(),
-                                                    h, scale * h, 0.0);
+            const int moved = placeOnCurvatureSteps(
+                network, {s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0});
             const PointMatrix& V = network.lines[0].points;
             EXPECT_GT(moved, V.rows() / 2) << "sigma " << sigma << " offset " << offset;
             for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
@@ -121,7 +121,7 @@ TEST(LinePlacement, TheFarBorderIsFoundToo)
     const Eigen::RowVector3d start(r * std::sin(back), 0, r * (1 - std::cos(back)));
     Polyline line = lineAlongY(start.x(), start.z(), 30.0, 1.5);
     LineNetwork network = networkOf(line);
-    placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0);
+    placeOnCurvatureSteps(network, {s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0});
     const PointMatrix& V = network.lines[0].points;
     for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
         if (std::abs(V(i, 1)) > 30.0 - 12.0) {
@@ -143,8 +143,8 @@ TEST(LinePlacement, NoStepNoMove)
         return p;
     }();
     LineNetwork onPlane = networkOf(lineAlongY(2.0, 0.0, 20.0, 1.5));
-    EXPECT_EQ(placeOnCurvatureSteps(onPlane, plane.points, plane.normals, Eigen::VectorXd(), h,
-                                    4 * h, 0.0),
+    EXPECT_EQ(placeOnCurvatureSteps(
+                  onPlane, {plane.points, plane.normals, Eigen::VectorXd(), h, 4 * h, 0.0}),
               0);
 
     const double R = 30.0;
@@ -161,8 +161,8 @@ TEST(LinePlacement, NoStepNoMove)
             R * std::sin(lat);
     }
     LineNetwork onSphere = networkOf(circle);
-    EXPECT_EQ(placeOnCurvatureSteps(onSphere, sphere.points, sphere.normals, Eigen::VectorXd(), h,
-                                    4 * h, 0.0),
+    EXPECT_EQ(placeOnCurvatureSteps(
+                  onSphere, {sphere.points, sphere.normals, Eigen::VectorXd(), h, 4 * h, 0.0}),
               0);
 }
 
@@ -178,8 +178,8 @@ TEST(LinePlacement, ABorderBeyondOneStripIsFoundFromItsEdge)
             LinePlacementOptions options;
             options.maxShift = 1.0 / 3.0; // 4 spacings of a strip 12 wide
             LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
-            placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h,
-                                  0.0, options);
+            placeOnCurvatureSteps(
+                network, {s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0}, options);
             const PointMatrix& V = network.lines[0].points;
             for (Eigen::Index i = 1; i + 1 < V.rows(); ++i) {
                 // A stride is half the strip's length: 6.
@@ -207,7 +207,7 @@ TEST(LinePlacement, AZigzagLineIsPlacedAlongItsDirectionOverTheStrip)
         line.points(i, 0) += (i / 2) % 2 == 0 ? 1.5 : -1.5;
     }
     LineNetwork network = networkOf(line);
-    placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0);
+    placeOnCurvatureSteps(network, {s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0});
     const PointMatrix& V = network.lines[0].points;
     double sum = 0.0;
     int count = 0;
@@ -239,7 +239,7 @@ TEST(LinePlacement, TheStripNarrowsToTheFilletThePointsShow)
     const double threshold = 1.0 / (4.0 * 60.0);
     const auto meanDistance = [&](const Eigen::VectorXd& curvature) {
         LineNetwork network = networkOf(lineAlongY(-2.0, 0.0, 20.0, 1.5));
-        placeOnCurvatureSteps(network, s.points, s.normals, curvature, h, scale * h, threshold);
+        placeOnCurvatureSteps(network, {s.points, s.normals, curvature, h, scale * h, threshold});
         const PointMatrix& V = network.lines[0].points;
         double sum = 0.0;
         int count = 0;
@@ -268,8 +268,9 @@ TEST(LinePlacement, ABorderBeyondTheLargestShiftIsLeftAlone)
         options.recentres = recentres;
         LineNetwork network = networkOf(lineAlongY(offset, 0.0, 20.0, 1.5));
         const PointMatrix before = network.lines[0].points;
-        EXPECT_EQ(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), h,
-                                        scale * h, 0.0, options),
+        EXPECT_EQ(placeOnCurvatureSteps(network,
+                                        {s.points, s.normals, Eigen::VectorXd(), h, scale * h, 0.0},
+                                        options),
                   0)
             << recentres << " re-centred strips, the border " << -offset << " off";
         EXPECT_TRUE(network.lines[0].points == before);
@@ -280,20 +281,20 @@ TEST(LinePlacement, BadInputIsRefused)
 {
     const shapes::Sample s = filletedStep(40.0, 20.0, 1.0, 0.0, 3);
     LineNetwork network = networkOf(lineAlongY(0.0, 0.0, 5.0, 1.5));
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals.topRows(3), Eigen::VectorXd(),
-                                       1.0, 4.0, 0.0),
+    EXPECT_THROW(placeOnCurvatureSteps(
+                     network, {s.points, s.normals.topRows(3), Eigen::VectorXd(), 1.0, 4.0, 0.0}),
                  std::invalid_argument);
-    EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd::Ones(3), 1.0,
-                                       4.0, 0.0),
+    EXPECT_THROW(placeOnCurvatureSteps(
+                     network, {s.points, s.normals, Eigen::VectorXd::Ones(3), 1.0, 4.0, 0.0}),
                  std::invalid_argument);
     EXPECT_THROW(
-        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 0.0, 4.0, 0.0),
+        placeOnCurvatureSteps(network, {s.points, s.normals, Eigen::VectorXd(), 0.0, 4.0, 0.0}),
         std::invalid_argument);
     EXPECT_THROW(
-        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0, 0.5, 0.0),
+        placeOnCurvatureSteps(network, {s.points, s.normals, Eigen::VectorXd(), 1.0, 0.5, 0.0}),
         std::invalid_argument);
     EXPECT_THROW(
-        placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0, NAN, 0.0),
+        placeOnCurvatureSteps(network, {s.points, s.normals, Eigen::VectorXd(), 1.0, NAN, 0.0}),
         std::invalid_argument);
     for (auto set : {+[](LinePlacementOptions& o) { o.halfWidth = 0; },
                      +[](LinePlacementOptions& o) { o.halfLength = -1; },
@@ -305,15 +306,15 @@ TEST(LinePlacement, BadInputIsRefused)
                      +[](LinePlacementOptions& o) { o.recentres = -1; }}) {
         LinePlacementOptions o;
         set(o);
-        EXPECT_THROW(placeOnCurvatureSteps(network, s.points, s.normals, Eigen::VectorXd(), 1.0,
-                                           4.0, 0.0, o),
+        EXPECT_THROW(placeOnCurvatureSteps(
+                         network, {s.points, s.normals, Eigen::VectorXd(), 1.0, 4.0, 0.0}, o),
                      std::invalid_argument);
     }
     // Nothing to place on: no points, no lines.
-    EXPECT_EQ(placeOnCurvatureSteps(network, PointMatrix(0, 3), NormalMatrix(0, 3),
-                                    Eigen::VectorXd(), 1.0, 4.0, 0.0),
+    EXPECT_EQ(placeOnCurvatureSteps(network, {PointMatrix(0, 3), NormalMatrix(0, 3),
+                                              Eigen::VectorXd(), 1.0, 4.0, 0.0}),
               0);
     LineNetwork none;
-    EXPECT_EQ(placeOnCurvatureSteps(none, s.points, s.normals, Eigen::VectorXd(), 1.0, 4.0, 0.0),
+    EXPECT_EQ(placeOnCurvatureSteps(none, {s.points, s.normals, Eigen::VectorXd(), 1.0, 4.0, 0.0}),
               0);
 }

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/smooth/SmoothRegions.h"
 
 using namespace featurelines;
@@ -75,7 +76,7 @@ TEST(SmoothRegions, ARegionIsConnectedAfterItsThinPointsLeave)
         candidate[i] = std::abs(points[i].x()) < 9.5 && std::abs(points[i].y() - 10.0) > 0.5;
     }
     const Neighbourhoods N = nearestNeighbours(P);
-    const SmoothRegions r = divideSmoothRegions(P, N, {}, candidate, meanSpacing(N));
+    const SmoothRegions r = divideSmoothRegions({P, N, {}, candidate, meanSpacing(N)});
     ASSERT_EQ(r.count(), 2);
     const auto left = regionsOf(r, P, [](double x) { return x < -9.5; });
     const auto right = regionsOf(r, P, [](double x) { return x > 9.5; });
@@ -110,7 +111,7 @@ TEST(SmoothRegions, ALongNeighbourEdgeDoesNotJumpTheBand)
     Polyline sharp;
     sharp.points.resize(2, 3);
     sharp.points << 0.0, -5.0, 0.0, 0.0, 65.0, 0.0;
-    const SmoothRegions r = divideSmoothRegions(P, N, {sharp}, {}, spacing);
+    const SmoothRegions r = divideSmoothRegions({P, N, {sharp}, {}, spacing});
     ASSERT_EQ(r.count(), 2);
     const auto left = regionsOf(r, P, [](double x) { return x < 0.0; });
     const auto right = regionsOf(r, P, [](double x) { return x > 0.0; });
@@ -151,7 +152,7 @@ TEST(SmoothRegions, PointLeftWithoutARegionNeighbourJoinsTheBand)
     SmoothRegionOptions options;
     options.minRegionNeighbours = 5;
     options.minRegionPoints = 1;
-    const SmoothRegions regions = divideSmoothRegions(P, N, {}, candidate, 1.0, options);
+    const SmoothRegions regions = divideSmoothRegions({P, N, {}, candidate, 1.0}, options);
 
     EXPECT_EQ(regions.region[0], -1) << "a point with no neighbour in its region";
     ASSERT_EQ(regions.count(), 1);
