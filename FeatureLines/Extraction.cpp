@@ -18,6 +18,7 @@
 #include "FeatureLines/support/IdleThreads.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/SmoothEdgeLevel.h"
 
 namespace featurelines {
 

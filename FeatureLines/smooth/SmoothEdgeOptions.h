@@ -1,22 +1,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Smooth edges of one smooth region (Sec. 2-4 of the 2008 paper): optional smoothing, mean
-// curvature, histogram thresholds, the low / inner / border labels, region growing on them, and
-// the cluster graph that turns the single-point clusters into closed lines — one set of closed
-// lines per threshold. Also the automatic choice of thresholds and the multi-step refinement
-// inside one large cluster (Sec. 4, Fig. 13 e).
+// The options of the smooth-edge stage (Sec. 2-4 of the 2008 paper), one struct read by its
+// steps: RegionGeometry.h, SmoothEdgeLevel.h, AutomaticThresholds.h, ClusterRefinement.h.
 #pragma once
 
-#include <memory>
-#include <vector>
-
-#include "FeatureLines/network/ClusterGraph.h"
 #include "FeatureLines/curvature/Curvature.h"
 #include "FeatureLines/curvature/CurvatureScale.h"
+#include "FeatureLines/curvature/Smoothing.h"
+#include "FeatureLines/network/ClusterGraph.h"
 #include "FeatureLines/smooth/HistogramThreshold.h"
 #include "FeatureLines/smooth/LinePlacement.h"
 #include "FeatureLines/smooth/PointLabels.h"
-#include "FeatureLines/neighbourhoods/RingNeighbourhood.h"
-#include "FeatureLines/curvature/Smoothing.h"
 
 namespace featurelines {
 
@@ -196,188 +189,5 @@ struct SmoothEdgeOptions
     /// Seed of the random choice of growing seeds (Sec. 3).
     unsigned seed = 1;
 };
-
-/// One region's own geometry: its (possibly smoothed) points, their neighbourhoods within the
-/// region, normals, 1-rings and mean curvature. Everything a threshold needs, computed once.
-struct RegionGeometry
-{
-    int region = -1;
-    /// Region point i is cloud point members[i].
-    std::vector<int> members;
-    PointMatrix points;
-    Neighbourhoods neighbours;
-    NormalMatrix normals;
-    RingNeighbourhoods ring;
-    Eigen::VectorXd curvature;
-    /// Estimated noise (x spacing) before smoothing, and whether the region was smoothed.
-    double noise = 0.0;
-    bool smoothed = false;
-    /// The curvature noise floor (1 / length unit): the standard deviation of the curvature a
-    /// flat face of this region's noise shows after the region's smoothing, fit and averaging.
-    double curvatureNoise = 0.0;
-    double spacing = 0.0;
-    /// The spacing of the sampling the curvature was computed at, x spacing: 1, or the
-    /// coarser scale chosen for the region (see analyseRegion). Lengths that depend on the fit
-    /// (the flat radius, the reach of the contrast and straddle tests) scale with it.
-    double curvatureScale = 1.0;
-
-    /// At a coarser scale: the region averaged onto that scale's grid, with its own smoothing,
-    /// 1-rings, curvature and noise floor. The automatic thresholds are decided on it (its
-    /// patches and reaches are in its own sampling); the curvature above is its curvature
-    /// carried back to the region's points, on which the lines are drawn. Null at scale 1.
-    std::shared_ptr<const RegionGeometry> coarse;
-    /// At a coarser scale: per point of the region, its row in `coarse` (the centroid of the
-    /// cell it was averaged into). Empty at scale 1.
-    std::vector<int> coarseRowOf;
-    /// Every scale weighed for the region: its spacing (x the region's), its number of points
-    /// and the thresholds the automatic rule accepts there; -1 at the region's own scale when
-    /// no coarser one accepted any (it was not weighed: it keeps the region whatever it finds).
-    struct ScaleTrial
-    {
-        double scale = 1.0;
-        int points = 0;
-        double noise = 0.0;
-        int acceptedThresholds = -1;
-        /// The least separation (noise floors, ThresholdDecision::separation) among them.
-        double separation = 0.0;
-    };
-    std::vector<ScaleTrial> scaleTrials;
-};
-
-/// Builds a region's geometry from the cloud's.
-///   P, N        the cloud and its k nearest neighbours
-///   region      #P region of every point (-1: none), members: the points of regionId
-RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
-                             const std::vector<int>& region, const std::vector<int>& members,
-                             int regionId, double spacing, const SmoothEdgeOptions& options = {});
-
-/// The same, given the cloud's normals over N (pcaNormals): a region point whose k nearest
-/// neighbours all lie in the region keeps its cloud normal (the same fit); only the points
-/// whose neighbourhood the region cuts are fitted again.
-RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
-                             const NormalMatrix& normals, const std::vector<int>& region,
-                             const std::vector<int>& members, int regionId, double spacing,
-                             const SmoothEdgeOptions& options = {});
-
-/// The same for a region of every point of P (no sharp edge or boundary band cuts the cloud),
-/// taking over P's neighbourhoods N, which are the region's own: the one-shot extraction and the
-/// coarse curvature scales spare their copy (190 MiB per million points at k = 16). normals may
-/// be empty (fitted here).
-RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
-                             int regionId, double spacing, const SmoothEdgeOptions& options = {});
-
-/// The noise estimate of SmoothEdgeOptions::noiseThreshold (x spacing): the median distance of
-/// a point from the quadric fitted to its neighbours (in its normal's frame, the point itself
-/// left out). Insensitive to curvature; about 0.9 sigma for normal noise sigma. At most
-/// maxSamples points are fitted (every n-th; 0: all).
-double estimateNoise(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
-                     double spacing, int maxSamples = 0);
-
-/// The closed lines at one threshold of a region.
-struct SmoothEdgeLevel
-{
-    double threshold = 0.0;
-    /// Per region point: its Sec. 3 label at this threshold and its label cluster.
-    std::vector<PointLabel> labels;
-    LabelClusters clusters;
-    /// Lines on the region's (possibly smoothed) points.
-    LineNetwork network;
-    ClusterGraphCounts counts;
-};
-
-/// Sec. 3 at threshold tau over the whole region, or over `subset` (region point indices)
-/// only, as the multi-step refinement does. Noise islands are levelled before the labels
-/// (SmoothEdgeOptions::islandMargin); lines without contrast across them are dropped
-/// (minLineContrast); free line ends are anchored on the `anchors` (the sharp and boundary
-/// lines around the region, see anchorLineEnds); short spurs and open pieces shorter than
-/// options.graph.minOpenComponentLength with an end on nothing are then dropped.
-SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
-                                       const SmoothEdgeOptions& options = {},
-                                       const std::vector<int>& subset = {},
-                                       const std::vector<Polyline>& anchors = {});
-
-/// The contrast across a line at threshold tau that smoothEdgesAtThreshold asks of it
-/// (minLineContrast, in noise floors): the median over the line's `points` (region point
-/// indices) of the local contrast, the median curvature above tau minus that at or below it
-/// among the points within two fit radii (two hops of the neighbourhoods); points with values
-/// on one side only count not, and 0 when none is left. Where the region's curvature was read
-/// at a coarser scale (RegionGeometry::coarse) it is taken there, at the cells the points were
-/// averaged into: the carried-back values cross tau over the coarse fit's width, of which two
-/// fit radii of the region's own sampling see only part.
-double lineContrast(const RegionGeometry& region, const Eigen::VectorXd& curvature, double tau,
-                    const std::vector<int>& points);
-
-/// Sec. 1.2: the smooth edges of a region end on the sharp edges (or the boundary) around it,
-/// but the region stops a band short of them. Every free end (no junction) of an open line
-/// that lies within `reach` of an anchor line, and points towards it (within
-/// maxAngleDegrees of the line's direction at that end), is extended to the closest point of
-/// the anchor lines. Returns per line two flags, start and end: anchored.
-std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
-                                 double reach, double maxAngleDegrees);
-
-/// Removes the lines flagged in `drop`; a junction left with two line ends joins them into one
-/// line (a loop when both are the same line's), left with one, that end is on nothing.
-/// Junctions are renumbered; `anchored` (two flags per line, see anchorLineEnds; empty: none)
-/// follows the lines.
-void dropLines(LineNetwork& network, std::vector<char>& anchored, const std::vector<char>& drop);
-
-/// Removes the lines shorter than minLength that run from a junction to an end on nothing
-/// (neither a junction nor, by the `anchored` flags, an anchor line): spurs noise grows off a
-/// feature line. A junction left with two line ends joins them into one line (a loop when
-/// both are the same line's); left with one, that end is on nothing. Repeated until no such
-/// spur is left. `anchored` follows the lines. Returns the number of lines removed.
-int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength);
-
-/// Drops the pieces of lines (lines joined through junctions) that have no cycle, are shorter
-/// than minLength in total and keep an end on nothing (neither a junction nor, by the
-/// `anchored` flags of anchorLineEnds, an anchor line): noise gathered along a surface rather
-/// than a feature. Junctions are renumbered. Returns the number of lines dropped.
-int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, double minLength);
-
-/// The histogram search on the region's curvature (or on `subset`'s) with the region's outlier
-/// rule: the first threshold, and the next lower / higher one (Sec. 2.2-2.3).
-ThresholdResult regionThreshold(const RegionGeometry& region, const SmoothEdgeOptions& options = {},
-                                const std::vector<int>& subset = {});
-ThresholdResult regionLowerThreshold(const RegionGeometry& region, double threshold,
-                                     const SmoothEdgeOptions& options = {});
-ThresholdResult regionHigherThreshold(const RegionGeometry& region, double threshold,
-                                      const SmoothEdgeOptions& options = {});
-
-/// Why a threshold was accepted or refused by the automatic rule, for reports and tests.
-struct ThresholdDecision
-{
-    ThresholdResult result;
-    bool accepted = false;
-    /// The threshold applied when accepted (AutomaticThresholdOptions::centreThresholds).
-    double applied = 0.0;
-    /// Inner points at tau (Sec. 3). The largest patches of the levels above and below tau:
-    /// connected points of the level whose whole 1-ring is in the level too.
-    int innerPoints = 0;
-    int largestPatch = 0;
-    int largestPatchBelow = 0;
-    /// Median curvature of the patches below and above tau (between the nearest accepted
-    /// thresholds), their contrast and their separation in curvature noise floors.
-    double medianBelow = 0.0;
-    double medianAbove = 0.0;
-    double contrast = 0.0;
-    double separation = 0.0;
-    /// Share of the border points at tau within two fit radii of a level outside the two
-    /// patches (AutomaticThresholdOptions::maxStraddle).
-    double straddle = 0.0;
-};
-
-/// The automatic mode (see AutomaticThresholdOptions): every threshold searched, in the order
-/// searched, with its decision. The accepted ones' applied values, sorted from high to low,
-/// are the region's thresholds. A region with no significant valley (a plane, a sphere) accepts
-/// none.
-std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
-                                                   const SmoothEdgeOptions& options = {});
-
-/// Sec. 4, Fig. 13 e: the histogram step applied again to one large label cluster of a level,
-/// for a fillet no valley of the whole region shows. Returns the level found inside the
-/// cluster (its threshold and lines), or throws std::invalid_argument when the cluster is not a
-/// large cluster of that level or holds too few distinct curvature values.
-SmoothEdgeLevel refineInCluster(const RegionGeometry& region, const SmoothEdgeLevel& level,
-                                int cluster, const SmoothEdgeOptions& options = {});
 
 } // namespace featurelines
