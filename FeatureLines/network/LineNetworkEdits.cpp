@@ -61,6 +61,195 @@ bool closestOnLines(const std::vector<Polyline>& lines, const Eigen::RowVector3d
     return std::isfinite(best);
 }
 
+/// A line's end: (line, 0 for its start | 1 for its end).
+using LineEnd = std::pair<size_t, int>;
+
+/// Per junction, the ends of the open lines not removed that lie on it.
+std::map<int, std::vector<LineEnd>> lineEndsAtJunctions(const std::vector<Polyline>& lines,
+                                                        const std::vector<char>& removed)
+{
+    std::map<int, std::vector<LineEnd>> ends;
+    for (size_t l = 0; l < lines.size(); ++l) {
+        if (removed[l] || lines[l].closed) {
+            continue;
+        }
+        if (lines[l].startJunction >= 0) {
+            ends[lines[l].startJunction].emplace_back(l, 0);
+        }
+        if (lines[l].endJunction >= 0) {
+            ends[lines[l].endJunction].emplace_back(l, 1);
+        }
+    }
+    return ends;
+}
+
+/// Joins line b onto line a where they meet (a ends at the junction, b starts there, after
+/// reversing either as needed): a + b stays as a, b is removed. `anchored` follows.
+void joinLines(std::vector<Polyline>& lines, std::vector<char>& anchored,
+               std::vector<char>& removed, LineEnd aAt, LineEnd bAt)
+{
+    auto [a, aEnd] = aAt;
+    auto [b, bEnd] = bAt;
+    auto reverse = [&](size_t l) {
+        Polyline& line = lines[l];
+        line.points = line.points.colwise().reverse().eval();
+        std::swap(line.startJunction, line.endJunction);
+        std::swap(anchored[2 * l], anchored[2 * l + 1]);
+    };
+    if (aEnd == 0) {
+        reverse(a);
+    }
+    if (bEnd == 1) {
+        reverse(b);
+    }
+    Polyline& first = lines[a];
+    const Polyline& second = lines[b];
+    PointMatrix joined(first.points.rows() + second.points.rows() - 1, 3);
+    joined << first.points, second.points.bottomRows(second.points.rows() - 1);
+    first.points = std::move(joined);
+    first.endJunction = second.endJunction;
+    anchored[2 * a + 1] = anchored[2 * b + 1];
+    removed[b] = 1;
+}
+
+/// A junction left with the line ends `at`: with one, that end becomes an end on nothing (it
+/// ended on lines that are gone); with two, they are one line through the point (a loop when
+/// both are the same line's). Returns whether lines were joined or closed.
+bool mendJunction(std::vector<Polyline>& lines, std::vector<char>& anchored,
+                  std::vector<char>& removed, const std::vector<LineEnd>& at)
+{
+    if (at.size() >= 3) {
+        return false;
+    }
+    if (at.size() == 1) {
+        Polyline& line = lines[at[0].first];
+        (at[0].second == 0 ? line.startJunction : line.endJunction) = -1;
+        anchored[2 * at[0].first + static_cast<size_t>(at[0].second)] = 0;
+        return false;
+    }
+    const size_t a = at[0].first, b = at[1].first;
+    if (removed[a] || removed[b]) {
+        return false; // touched by a merge of this pass
+    }
+    if (a == b) {
+        Polyline& line = lines[a];
+        if (line.points.rows() > 2) {
+            line.points.conservativeResize(line.points.rows() - 1, 3);
+        }
+        line.closed = true;
+        line.startJunction = line.endJunction = -1;
+        return true;
+    }
+    joinLines(lines, anchored, removed, at[0], at[1]);
+    return true;
+}
+
+/// Keeps the lines flagged in `keep`, in their order, and the junctions they end on, renumbered
+/// in the order the kept lines meet them. `anchored` (two flags per line; null: none) follows
+/// the lines.
+void keepLines(LineNetwork& network, const std::vector<char>& keep, std::vector<char>* anchored)
+{
+    std::vector<Polyline> kept;
+    std::vector<char> keptAnchored;
+    std::map<int, int> newJunction;
+    for (size_t l = 0; l < network.lines.size(); ++l) {
+        if (!keep[l]) {
+            continue;
+        }
+        Polyline line = std::move(network.lines[l]);
+        for (int* j : {&line.startJunction, &line.endJunction}) {
+            if (*j >= 0) {
+                *j = newJunction.emplace(*j, static_cast<int>(newJunction.size())).first->second;
+            }
+        }
+        kept.push_back(std::move(line));
+        if (anchored) {
+            keptAnchored.push_back((*anchored)[2 * l]);
+            keptAnchored.push_back((*anchored)[2 * l + 1]);
+        }
+    }
+    PointMatrix junctions(static_cast<Eigen::Index>(newJunction.size()), 3);
+    for (const auto& [old, now] : newJunction) {
+        junctions.row(now) = network.junctions.row(old);
+    }
+    network.lines = std::move(kept);
+    if (anchored) {
+        *anchored = std::move(keptAnchored);
+    }
+    network.junctions = std::move(junctions);
+}
+
+/// A piece of a network: lines joined through shared junctions.
+struct Piece
+{
+    double length = 0.0;
+    int openLines = 0;
+    int looseEnds = 0; // ends on no junction, anchored or not
+    int freeEnds = 0;  // ends on nothing at all
+    std::vector<int> junctions;
+    bool closedLine = false;
+};
+
+/// Joins in `sets` (one element per line) the lines that share a junction.
+void joinLinesAtJunctions(const LineNetwork& network, DisjointSets& sets)
+{
+    std::map<int, int> lineAtJunction;
+    for (size_t l = 0; l < network.lines.size(); ++l) {
+        for (int j : {network.lines[l].startJunction, network.lines[l].endJunction}) {
+            if (j < 0) {
+                continue;
+            }
+            auto [it, inserted] = lineAtJunction.emplace(j, static_cast<int>(l));
+            if (!inserted) {
+                sets.join(static_cast<int>(l), it->second);
+            }
+        }
+    }
+}
+
+/// The pieces of the network by their set in `sets`: length, lines, ends and junctions.
+std::map<int, Piece> measurePieces(const LineNetwork& network, const DisjointSets& sets,
+                                   const std::vector<char>& anchored)
+{
+    std::map<int, Piece> pieces;
+    for (size_t l = 0; l < network.lines.size(); ++l) {
+        const Polyline& line = network.lines[l];
+        Piece& p = pieces[sets.find(static_cast<int>(l))];
+        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+            p.length += (line.points.row(i) - line.points.row(i - 1)).norm();
+        }
+        if (line.closed) {
+            p.closedLine = true;
+            continue;
+        }
+        ++p.openLines;
+        const int ends[2] = {line.startJunction, line.endJunction};
+        for (int e = 0; e < 2; ++e) {
+            if (ends[e] >= 0) {
+                p.junctions.push_back(ends[e]);
+                continue;
+            }
+            ++p.looseEnds;
+            if (!anchored[2 * l + static_cast<size_t>(e)]) {
+                ++p.freeEnds;
+            }
+        }
+    }
+    return pieces;
+}
+
+/// A piece is kept when it has a cycle, no end on nothing, or at least minLength of lines.
+bool keepPiece(Piece& p, double minLength)
+{
+    std::sort(p.junctions.begin(), p.junctions.end());
+    const auto junctions =
+        std::unique(p.junctions.begin(), p.junctions.end()) - p.junctions.begin();
+    // A tree of E lines has E + 1 end nodes (junctions and loose ends); more lines than
+    // that close a cycle.
+    const bool cycle = p.closedLine || p.openLines >= junctions + p.looseEnds;
+    return cycle || p.freeEnds == 0 || p.length >= minLength;
+}
+
 } // namespace
 
 std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
@@ -115,96 +304,19 @@ void dropLines(LineNetwork& network, std::vector<char>& anchored, const std::vec
     anchored.resize(2 * lines.size(), 0);
     std::vector<char> removed = drop;
     removed.resize(lines.size(), 0);
-    // Junctions left with fewer than three line ends: one end becomes an end on nothing (it
-    // ended on lines that are gone), two ends are one line through the point (a loop when
-    // both are the same line's). Merges can leave a line with both ends at one junction,
-    // hence the passes.
+    // Junctions left with fewer than three line ends are mended. Merges can leave a line with
+    // both ends at one junction, hence the passes.
     for (bool changed = true; changed;) {
         changed = false;
-        std::map<int, std::vector<std::pair<size_t, int>>> ends; // junction -> (line, 0|1)
-        for (size_t l = 0; l < lines.size(); ++l) {
-            if (removed[l] || lines[l].closed) {
-                continue;
-            }
-            if (lines[l].startJunction >= 0) {
-                ends[lines[l].startJunction].emplace_back(l, 0);
-            }
-            if (lines[l].endJunction >= 0) {
-                ends[lines[l].endJunction].emplace_back(l, 1);
-            }
-        }
-        for (const auto& [junction, at] : ends) {
-            if (at.size() >= 3) {
-                continue;
-            }
-            if (at.size() == 1) {
-                Polyline& line = lines[at[0].first];
-                (at[0].second == 0 ? line.startJunction : line.endJunction) = -1;
-                anchored[2 * at[0].first + static_cast<size_t>(at[0].second)] = 0;
-                continue;
-            }
-            auto [a, aEnd] = at[0];
-            auto [b, bEnd] = at[1];
-            if (removed[a] || removed[b]) {
-                continue; // touched by a merge of this pass
-            }
-            changed = true;
-            if (a == b) {
-                Polyline& line = lines[a];
-                if (line.points.rows() > 2) {
-                    line.points.conservativeResize(line.points.rows() - 1, 3);
-                }
-                line.closed = true;
-                line.startJunction = line.endJunction = -1;
-                continue;
-            }
-            // a ends at the junction, b starts there: a + b.
-            auto reverse = [&](size_t l) {
-                Polyline& line = lines[l];
-                line.points = line.points.colwise().reverse().eval();
-                std::swap(line.startJunction, line.endJunction);
-                std::swap(anchored[2 * l], anchored[2 * l + 1]);
-            };
-            if (aEnd == 0) {
-                reverse(a);
-            }
-            if (bEnd == 1) {
-                reverse(b);
-            }
-            Polyline& first = lines[a];
-            const Polyline& second = lines[b];
-            PointMatrix joined(first.points.rows() + second.points.rows() - 1, 3);
-            joined << first.points, second.points.bottomRows(second.points.rows() - 1);
-            first.points = std::move(joined);
-            first.endJunction = second.endJunction;
-            anchored[2 * a + 1] = anchored[2 * b + 1];
-            removed[b] = 1;
+        for (const auto& junction : lineEndsAtJunctions(lines, removed)) {
+            changed = mendJunction(lines, anchored, removed, junction.second) || changed;
         }
     }
-    std::vector<Polyline> kept;
-    std::vector<char> keptAnchored;
-    std::map<int, int> newJunction;
+    std::vector<char> keep(lines.size(), 0);
     for (size_t l = 0; l < lines.size(); ++l) {
-        if (removed[l]) {
-            continue;
-        }
-        Polyline line = std::move(lines[l]);
-        for (int* j : {&line.startJunction, &line.endJunction}) {
-            if (*j >= 0) {
-                *j = newJunction.emplace(*j, static_cast<int>(newJunction.size())).first->second;
-            }
-        }
-        kept.push_back(std::move(line));
-        keptAnchored.push_back(anchored[2 * l]);
-        keptAnchored.push_back(anchored[2 * l + 1]);
+        keep[l] = !removed[l];
     }
-    PointMatrix junctions(static_cast<Eigen::Index>(newJunction.size()), 3);
-    for (const auto& [old, now] : newJunction) {
-        junctions.row(now) = network.junctions.row(old);
-    }
-    lines = std::move(kept);
-    anchored = std::move(keptAnchored);
-    network.junctions = std::move(junctions);
+    keepLines(network, keep, &anchored);
 }
 
 int pruneDanglingLines(LineNetwork& network, std::vector<char>& anchored, double minLength)
@@ -250,85 +362,20 @@ int dropOpenPieces(LineNetwork& network, const std::vector<char>& anchored, doub
     if (!(minLength > 0.0) || lineCount == 0) {
         return 0;
     }
-    // Pieces: lines joined through shared junctions.
     DisjointSets sets(static_cast<int>(lineCount));
-    std::map<int, int> lineAtJunction;
-    for (size_t l = 0; l < lineCount; ++l) {
-        for (int j : {network.lines[l].startJunction, network.lines[l].endJunction}) {
-            if (j < 0) {
-                continue;
-            }
-            auto [it, inserted] = lineAtJunction.emplace(j, static_cast<int>(l));
-            if (!inserted) {
-                sets.join(static_cast<int>(l), it->second);
-            }
-        }
-    }
-    struct Piece
-    {
-        double length = 0.0;
-        int openLines = 0;
-        int looseEnds = 0; // ends on no junction, anchored or not
-        int freeEnds = 0;  // ends on nothing at all
-        std::vector<int> junctions;
-        bool closedLine = false;
-    };
-    std::map<int, Piece> pieces;
-    for (size_t l = 0; l < lineCount; ++l) {
-        const Polyline& line = network.lines[l];
-        Piece& p = pieces[sets.find(static_cast<int>(l))];
-        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
-            p.length += (line.points.row(i) - line.points.row(i - 1)).norm();
-        }
-        if (line.closed) {
-            p.closedLine = true;
-            continue;
-        }
-        ++p.openLines;
-        const int ends[2] = {line.startJunction, line.endJunction};
-        for (int e = 0; e < 2; ++e) {
-            if (ends[e] >= 0) {
-                p.junctions.push_back(ends[e]);
-                continue;
-            }
-            ++p.looseEnds;
-            if (!anchored[2 * l + static_cast<size_t>(e)]) {
-                ++p.freeEnds;
-            }
-        }
-    }
-    std::vector<char> keepPiece(lineCount, 0);
+    joinLinesAtJunctions(network, sets);
+    std::map<int, Piece> pieces = measurePieces(network, sets, anchored);
+    std::vector<char> keepPieceOf(lineCount, 0);
     for (auto& [id, p] : pieces) {
-        std::sort(p.junctions.begin(), p.junctions.end());
-        const auto junctions =
-            std::unique(p.junctions.begin(), p.junctions.end()) - p.junctions.begin();
-        // A tree of E lines has E + 1 end nodes (junctions and loose ends); more lines than
-        // that close a cycle.
-        const bool cycle = p.closedLine || p.openLines >= junctions + p.looseEnds;
-        keepPiece[static_cast<size_t>(id)] = cycle || p.freeEnds == 0 || p.length >= minLength;
+        keepPieceOf[static_cast<size_t>(id)] = keepPiece(p, minLength);
     }
-    std::vector<Polyline> kept;
-    std::map<int, int> newJunction;
+    std::vector<char> keep(lineCount, 0);
     int dropped = 0;
     for (size_t l = 0; l < lineCount; ++l) {
-        if (!keepPiece[static_cast<size_t>(sets.find(static_cast<int>(l)))]) {
-            ++dropped;
-            continue;
-        }
-        Polyline line = network.lines[l];
-        for (int* j : {&line.startJunction, &line.endJunction}) {
-            if (*j >= 0) {
-                *j = newJunction.emplace(*j, static_cast<int>(newJunction.size())).first->second;
-            }
-        }
-        kept.push_back(std::move(line));
+        keep[l] = keepPieceOf[static_cast<size_t>(sets.find(static_cast<int>(l)))];
+        dropped += keep[l] ? 0 : 1;
     }
-    PointMatrix junctions(static_cast<Eigen::Index>(newJunction.size()), 3);
-    for (const auto& [old, now] : newJunction) {
-        junctions.row(now) = network.junctions.row(old);
-    }
-    network.lines = std::move(kept);
-    network.junctions = std::move(junctions);
+    keepLines(network, keep, nullptr);
     return dropped;
 }
 

@@ -239,6 +239,169 @@ ThresholdResult regionHigherThreshold(const RegionGeometry& region, double thres
     return findHigherThreshold(valuesOf(region, {}), threshold, histogramOptions(region, options));
 }
 
+namespace {
+
+/// A range of values (low, high] still to search, and the patches a threshold found in it is
+/// weighed against: the values between the nearest accepted thresholds on either side
+/// (patchLow, patchHigh], not only the values of the range searched.
+struct Range
+{
+    double low, high;
+    double patchLow, patchHigh;
+    bool first;
+    int misses; // thresholds refused on the way to this range
+};
+
+/// What the automatic rule weighs every threshold of a region with.
+struct AutomaticSearch
+{
+    const RegionGeometry& region;
+    const SmoothEdgeOptions& options;
+    /// AutomaticThresholdOptions::minInnerPoints, 0 resolved.
+    int minInner;
+    /// The curvature of AutomaticThresholdOptions::flatRadius.
+    double flat;
+    ThresholdOptions histogram;
+    std::vector<double> all;
+    std::vector<int> everyPoint;
+};
+
+/// How a threshold fared on the tests of AutomaticThresholdOptions.
+struct ThresholdTests
+{
+    bool valley, patch, patchBelow, levels;
+};
+
+void requireAutomaticOptions(const AutomaticThresholdOptions& a)
+{
+    if (a.maxThresholds < 0 || a.maxSearches < 0 || a.maxMisses < 0 || a.minRatio < 1.0 ||
+        a.minInnerPoints < 0 || a.minContrast < 1.0 || !(a.flatRadius > 0.0) ||
+        !(a.minSeparation >= 0.0) || !(a.maxStraddle >= 0.0) || a.straddleSamples < 0) {
+        throw std::invalid_argument("automatic thresholds: the limits are out of range");
+    }
+}
+
+AutomaticSearch automaticSearch(const RegionGeometry& region, const SmoothEdgeOptions& options)
+{
+    const AutomaticThresholdOptions& a = options.automatic;
+    const int minInner = a.minInnerPoints > 0 ? a.minInnerPoints : 2 * region.neighbours.k();
+    const double flat = 1.0 / (a.flatRadius * region.spacing);
+    return {region,
+            options,
+            minInner,
+            flat,
+            histogramOptions(region, options),
+            valuesOf(region, {}),
+            allIndices(region.points.rows())};
+}
+
+/// The region's values in the range; none when a range searched after a threshold cannot hold
+/// two levels.
+std::vector<double> valuesToSplit(const AutomaticSearch& s, const Range& range)
+{
+    const AutomaticThresholdOptions& a = s.options.automatic;
+    std::vector<double> values;
+    for (double v : s.all) {
+        if (v > range.low && v <= range.high) {
+            values.push_back(v);
+        }
+    }
+    if (values.empty() || range.first) {
+        return values;
+    }
+    // A range whose values cannot hold two levels (contrast, separation) is not split.
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    if ((*hi + s.flat) / (*lo + s.flat) < a.minContrast ||
+        *hi - *lo < a.minSeparation * s.region.curvatureNoise) {
+        return {};
+    }
+    return values;
+}
+
+/// The histogram options of a range: the first is the whole histogram with its outliers
+/// (Sec. 2.4); the ranges after it lie between thresholds and keep all their values.
+ThresholdOptions rangeHistogramOptions(const AutomaticSearch& s, const Range& range)
+{
+    ThresholdOptions h = s.histogram;
+    if (!range.first) {
+        h.outlierPercent = 0.0;
+    }
+    return h;
+}
+
+/// Weighs the threshold d.result found in the range with histogram options h: fills in the rest
+/// of d and returns how it fared on each test.
+ThresholdTests weighThreshold(const AutomaticSearch& s, const Range& range,
+                              const ThresholdOptions& h, ThresholdDecision& d)
+{
+    const AutomaticThresholdOptions& a = s.options.automatic;
+    const RegionGeometry& region = s.region;
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const double tau =
+        a.centreThresholds ? valleyMiddle(d.result, h.minPeakPercent) : d.result.threshold;
+    d.applied = tau;
+    std::tie(d.largestPatch, d.largestPatchBelow) =
+        largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
+    std::vector<double> below, above;
+    for (double v : s.all) {
+        if (v > range.patchLow && v <= range.patchHigh) {
+            (v <= tau ? below : above).push_back(v);
+        }
+    }
+    d.medianBelow = median(std::move(below));
+    d.medianAbove = median(std::move(above));
+    const std::vector<PointLabel> labels =
+        labelPoints(region.curvature, tau, region.ring, s.everyPoint, s.options.labels);
+    d.innerPoints = static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
+    d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow, range.patchHigh,
+                               a.straddleReach);
+    d.contrast = (d.medianAbove + s.flat) / (d.medianBelow + s.flat);
+    d.separation = region.curvatureNoise > 0.0
+                       ? (d.medianAbove - d.medianBelow) / region.curvatureNoise
+                       : infinity;
+    ThresholdTests t;
+    t.patch = d.largestPatch >= s.minInner;
+    t.patchBelow = d.largestPatchBelow >= s.minInner;
+    t.levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
+               d.straddle <= a.maxStraddle;
+    // The valley must follow a peak of a patch's worth of values: e = b1 / b2 of a few
+    // stray values before an empty bin (b2 = 0) is no valley.
+    t.valley = d.result.ratio >= a.minRatio && d.result.peakCount >= static_cast<long>(s.minInner);
+    d.accepted = t.valley && t.patch && t.patchBelow && t.levels;
+    return t;
+}
+
+/// The ranges searched after decision d on the range (pushed on the depth-first stack).
+void queueNextRanges(const Range& range, const ThresholdDecision& d, const ThresholdTests& t,
+                     int maxMisses, std::vector<Range>& ranges)
+{
+    const double tau = d.applied;
+    // Sec. 2.4: the outliers leave the histogram, not the patches.
+    const double searchHigh = range.first ? d.result.outlierCut : range.high;
+    if (d.accepted) {
+        // Searched next: the higher values first, then the lower (Sec. 2.3 offers both).
+        ranges.push_back({range.patchLow, tau, range.patchLow, tau, false, 0});
+        ranges.push_back({tau, searchHigh, tau, range.patchHigh, false, 0});
+    } else if (range.misses >= maxMisses) {
+        return;
+    } else if (!t.patch) {
+        // No patch above tau: the valley found lies above the highest patch of the range
+        // (e.g. after a fillet peak at the top of the histogram); the patches' own valley
+        // is lower down (Sec. 2.3, "lower threshold").
+        ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh, false,
+                          range.misses + 1});
+    } else if (!t.levels || !t.patchBelow) {
+        // tau splits one curvature level in two (a peak and its own noise tail), or cuts
+        // the transition between two levels short of the lower one; a second level, if
+        // any, lies higher up (Sec. 4, Fig. 9 a: "the desired threshold is located after
+        // the second peak").
+        ranges.push_back({d.result.threshold, searchHigh, range.patchLow, range.patchHigh, false,
+                          range.misses + 1});
+    }
+}
+
+} // namespace
+
 std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
                                                    const SmoothEdgeOptions& options)
 {
@@ -248,120 +411,34 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         return automaticThresholds(*region.coarse, options);
     }
     const AutomaticThresholdOptions& a = options.automatic;
-    if (a.maxThresholds < 0 || a.maxSearches < 0 || a.maxMisses < 0 || a.minRatio < 1.0 ||
-        a.minInnerPoints < 0 || a.minContrast < 1.0 || !(a.flatRadius > 0.0) ||
-        !(a.minSeparation >= 0.0) || !(a.maxStraddle >= 0.0) || a.straddleSamples < 0) {
-        throw std::invalid_argument("automatic thresholds: the limits are out of range");
-    }
-    const int minInner = a.minInnerPoints > 0 ? a.minInnerPoints : 2 * region.neighbours.k();
-    const double flat = 1.0 / (a.flatRadius * region.spacing);
-    const ThresholdOptions histogram = histogramOptions(region, options);
-    const std::vector<double> all = valuesOf(region, {});
-    const std::vector<int> everyPoint = allIndices(region.points.rows());
+    requireAutomaticOptions(a);
+    const AutomaticSearch search = automaticSearch(region, options);
     constexpr double infinity = std::numeric_limits<double>::infinity();
-
     std::vector<ThresholdDecision> decisions;
     int accepted = 0;
-    // Ranges of values (low, high] still to search, depth first. The first is the whole
-    // histogram with its outliers (Sec. 2.4); an accepted tau opens the ranges below and above
-    // it (the paper's "lower" and "higher" steps, Sec. 2.3). A threshold is weighed against the
-    // patches it separates: the values between the nearest accepted thresholds on either side
-    // (patchLow, patchHigh], not only the values of the range searched.
-    struct Range
-    {
-        double low, high;
-        double patchLow, patchHigh;
-        bool first;
-        int misses; // thresholds refused on the way to this range
-    };
+    // Ranges of values still to search, depth first. The first is the whole histogram with its
+    // outliers (Sec. 2.4); an accepted tau opens the ranges below and above it (the paper's
+    // "lower" and "higher" steps, Sec. 2.3).
     std::vector<Range> ranges{{-infinity, infinity, -infinity, infinity, true, 0}};
     while (!ranges.empty() && accepted < a.maxThresholds &&
            static_cast<int>(decisions.size()) < a.maxSearches) {
         const Range range = ranges.back();
         ranges.pop_back();
-        std::vector<double> values;
-        for (double v : all) {
-            if (v > range.low && v <= range.high) {
-                values.push_back(v);
-            }
-        }
+        const std::vector<double> values = valuesToSplit(search, range);
         if (values.empty()) {
             continue;
         }
-        if (!range.first) {
-            // A range whose values cannot hold two levels (contrast, separation) is not split.
-            const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-            if ((*hi + flat) / (*lo + flat) < a.minContrast ||
-                *hi - *lo < a.minSeparation * region.curvatureNoise) {
-                continue;
-            }
-        }
-        ThresholdOptions h = histogram;
-        if (!range.first) {
-            h.outlierPercent = 0.0;
-        }
+        const ThresholdOptions h = rangeHistogramOptions(search, range);
         ThresholdDecision d;
         try {
             d.result = findThreshold(values, h);
         } catch (const std::invalid_argument&) {
             continue; // too few distinct values in this range: nothing to split
         }
-        const double tau =
-            a.centreThresholds ? valleyMiddle(d.result, h.minPeakPercent) : d.result.threshold;
-        d.applied = tau;
-        // Sec. 2.4: the outliers leave the histogram, not the patches.
-        const double searchHigh = range.first ? d.result.outlierCut : range.high;
-        std::tie(d.largestPatch, d.largestPatchBelow) =
-            largestPatches(region.curvature, range.patchLow, tau, range.patchHigh, region.ring);
-        std::vector<double> below, above;
-        for (double v : all) {
-            if (v > range.patchLow && v <= range.patchHigh) {
-                (v <= tau ? below : above).push_back(v);
-            }
-        }
-        d.medianBelow = median(std::move(below));
-        d.medianAbove = median(std::move(above));
-        const std::vector<PointLabel> labels =
-            labelPoints(region.curvature, tau, region.ring, everyPoint, options.labels);
-        d.innerPoints =
-            static_cast<int>(std::count(labels.begin(), labels.end(), PointLabel::Inner));
-        d.straddle = straddleShare(region, labels, a.straddleSamples, range.patchLow,
-                                   range.patchHigh, a.straddleReach);
-        d.contrast = (d.medianAbove + flat) / (d.medianBelow + flat);
-        d.separation = region.curvatureNoise > 0.0
-                           ? (d.medianAbove - d.medianBelow) / region.curvatureNoise
-                           : infinity;
-        const bool patch = d.largestPatch >= minInner;
-        const bool patchBelow = d.largestPatchBelow >= minInner;
-        const bool levels = d.contrast >= a.minContrast && d.separation >= a.minSeparation &&
-                            d.straddle <= a.maxStraddle;
-        // The valley must follow a peak of a patch's worth of values: e = b1 / b2 of a few
-        // stray values before an empty bin (b2 = 0) is no valley.
-        const bool valley =
-            d.result.ratio >= a.minRatio && d.result.peakCount >= static_cast<long>(minInner);
-        d.accepted = valley && patch && patchBelow && levels;
+        const ThresholdTests tests = weighThreshold(search, range, h, d);
         decisions.push_back(d);
-        if (d.accepted) {
-            ++accepted;
-            // Searched next: the higher values first, then the lower (Sec. 2.3 offers both).
-            ranges.push_back({range.patchLow, tau, range.patchLow, tau, false, 0});
-            ranges.push_back({tau, searchHigh, tau, range.patchHigh, false, 0});
-        } else if (range.misses >= a.maxMisses) {
-            continue;
-        } else if (!patch) {
-            // No patch above tau: the valley found lies above the highest patch of the range
-            // (e.g. after a fillet peak at the top of the histogram); the patches' own valley
-            // is lower down (Sec. 2.3, "lower threshold").
-            ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh, false,
-                              range.misses + 1});
-        } else if (!levels || !patchBelow) {
-            // tau splits one curvature level in two (a peak and its own noise tail), or cuts
-            // the transition between two levels short of the lower one; a second level, if
-            // any, lies higher up (Sec. 4, Fig. 9 a: "the desired threshold is located after
-            // the second peak").
-            ranges.push_back({d.result.threshold, searchHigh, range.patchLow, range.patchHigh,
-                              false, range.misses + 1});
-        }
+        accepted += d.accepted ? 1 : 0;
+        queueNextRanges(range, d, tests, a.maxMisses, ranges);
     }
     return decisions;
 }

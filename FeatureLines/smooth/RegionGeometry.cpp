@@ -250,6 +250,116 @@ void fillRimFromInterior(RegionGeometry& g, double width)
     }
 }
 
+void requireScaleOptions(const CurvatureScaleOptions& so)
+{
+    if (!(so.maxScale >= 1.0) || !(so.carryWidth > 0.0) || !(so.rimWidth >= 0.0) ||
+        so.minPoints < 0 || !(so.planeTolerance >= 0.0)) {
+        throw std::invalid_argument("curvature scales: the coarsest scale must be at least 1 "
+                                    "spacing, the carry width positive, the rim width, the "
+                                    "plane tolerance and the least number of cells not "
+                                    "negative");
+    }
+}
+
+/// The largest fillet radius that stands minSeparation noise floors above a flat face, at a
+/// curvature noise floor `floor`: |H| = 1 / 2r.
+double largestVisibleRadius(double floor, const SmoothEdgeOptions& options)
+{
+    const double minSeparation = std::max(options.automatic.minSeparation, 1.0);
+    return 1.0 / (2.0 * minSeparation * floor);
+}
+
+/// The options a coarse scale of a region is analysed with: no coarser scales of its own, and
+/// no curvature averaging. The grid's averaging has already taken most of the noise; averaging
+/// the curvature too would blur each transition over two more coarse neighbourhoods, and carry
+/// the mean curvature through zero between a concave fillet and the convex face it meets (a band
+/// that looks like a flat patch of its own).
+SmoothEdgeOptions coarseScaleOptions(const SmoothEdgeOptions& options)
+{
+    SmoothEdgeOptions coarse = options;
+    coarse.scales.maxScale = 1.0;
+    coarse.curvatureAveragingPasses = 0;
+    return coarse;
+}
+
+/// A scale's trial: the thresholds the automatic rule accepts on the geometry r.
+RegionGeometry::ScaleTrial weighScale(const RegionGeometry& r, double regionSpacing,
+                                      const SmoothEdgeOptions& coarseOptions)
+{
+    RegionGeometry::ScaleTrial trial;
+    trial.scale = r.spacing / regionSpacing;
+    trial.acceptedThresholds = 0;
+    trial.points = static_cast<int>(r.points.rows());
+    trial.noise = r.noise;
+    for (const ThresholdDecision& d : automaticThresholds(r, coarseOptions)) {
+        if (d.accepted) {
+            trial.separation = trial.acceptedThresholds == 0
+                                   ? d.separation
+                                   : std::min(trial.separation, d.separation);
+            ++trial.acceptedThresholds;
+        }
+    }
+    return trial;
+}
+
+/// The coarse scale that accepts the most thresholds, with the grid its cells were averaged on.
+struct CoarseScale
+{
+    std::shared_ptr<RegionGeometry> geometry;
+    GridCentroids grid;
+    int acceptedThresholds = 0;
+};
+
+/// The region's raw points averaged onto the grid of `scale` region spacings, analysed as a
+/// region of their own, its rim filled from its interior.
+std::shared_ptr<RegionGeometry> coarseGeometry(const GridCentroids& grid, const RegionGeometry& g,
+                                               const SmoothEdgeOptions& coarseOptions)
+{
+    NeighbourOptions no;
+    no.k = g.neighbours.k();
+    Neighbourhoods cn = nearestNeighbours(grid.points, no);
+    const double coarseSpacing = meanSpacing(cn);
+    auto coarse = std::make_shared<RegionGeometry>(analyseRegion(
+        grid.points, std::move(cn), NormalMatrix(), g.region, coarseSpacing, coarseOptions));
+    fillRimFromInterior(*coarse, coarseOptions.scales.rimWidth * coarseSpacing);
+    return coarse;
+}
+
+/// The coarse scales (2, 4, ... spacings) weighed in turn, each trial added to g.scaleTrials,
+/// until the largest visible radius covers the region (extent) or too few cells are left.
+CoarseScale weighCoarseScales(const PointMatrix& raw, double extent, RegionGeometry& g,
+                              const SmoothEdgeOptions& options)
+{
+    const CurvatureScaleOptions& so = options.scales;
+    const SmoothEdgeOptions coarseOptions = coarseScaleOptions(options);
+    CoarseScale best;
+    for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
+        // A coarser scale is an offer, not a stage: one that cannot be analysed (too few or
+        // degenerate cells) ends the trials and the region keeps what it has.
+        try {
+            GridCentroids grid = gridCentroids(raw, s * g.spacing);
+            const Eigen::Index cells = grid.points.rows();
+            if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
+                break;
+            }
+            const std::shared_ptr<RegionGeometry> coarse = coarseGeometry(grid, g, coarseOptions);
+            g.scaleTrials.push_back(weighScale(*coarse, g.spacing, coarseOptions));
+            // The finer of two coarse scales on a tie.
+            if (g.scaleTrials.back().acceptedThresholds > best.acceptedThresholds) {
+                best.acceptedThresholds = g.scaleTrials.back().acceptedThresholds;
+                best.geometry = coarse;
+                best.grid = std::move(grid);
+            }
+            if (largestVisibleRadius(coarse->curvatureNoise, options) >= extent) {
+                break;
+            }
+        } catch (const std::invalid_argument&) {
+            break;
+        }
+    }
+    return best;
+}
+
 /// Beyond the paper: the scale of a region's curvature. At the cloud's own sampling a fillet of
 /// radius r stands minSeparation noise floors above a flat face only while r stays under
 /// 1 / (2 minSeparation floor); when that radius is smaller than the region itself, larger
@@ -263,25 +373,17 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
                           const SmoothEdgeOptions& options)
 {
     const CurvatureScaleOptions& so = options.scales;
-    if (!(so.maxScale >= 1.0) || !(so.carryWidth > 0.0) || !(so.rimWidth >= 0.0) ||
-        so.minPoints < 0 || !(so.planeTolerance >= 0.0)) {
-        throw std::invalid_argument("curvature scales: the coarsest scale must be at least 1 "
-                                    "spacing, the carry width positive, the rim width, the "
-                                    "plane tolerance and the least number of cells not "
-                                    "negative");
-    }
+    requireScaleOptions(so);
     if (!(so.maxScale >= 2.0) || !(g.curvatureNoise > 0.0)) {
         return;
     }
-    const double minSeparation = std::max(options.automatic.minSeparation, 1.0);
-    const auto largestRadius = [&](double floor) { return 1.0 / (2.0 * minSeparation * floor); };
     const Eigen::Index m = g.points.rows();
     PointMatrix raw(m, 3);
     for (Eigen::Index i = 0; i < m; ++i) {
         raw.row(i) = P.row(members[static_cast<size_t>(i)]);
     }
     const double extent = 0.5 * (raw.colwise().maxCoeff() - raw.colwise().minCoeff()).norm();
-    if (largestRadius(g.curvatureNoise) >= extent) {
+    if (largestVisibleRadius(g.curvatureNoise, options) >= extent) {
         return;
     }
     // A face within noise of its plane (one in a thousand of its points may stray farther,
@@ -289,82 +391,27 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     if (m >= 3 && planeDeviation(raw, 0.001) <= so.planeTolerance * g.noise * g.spacing) {
         return;
     }
-    SmoothEdgeOptions coarseOptions = options;
-    coarseOptions.scales.maxScale = 1.0;
-    // The grid's averaging has already taken most of the noise; averaging the curvature
-    // too would blur each transition over two more coarse neighbourhoods, and carry the mean
-    // curvature through zero between a concave fillet and the convex face it meets (a band
-    // that looks like a flat patch of its own).
-    coarseOptions.curvatureAveragingPasses = 0;
-    const auto weigh = [&](const RegionGeometry& r) {
-        RegionGeometry::ScaleTrial trial;
-        trial.scale = r.spacing / g.spacing;
-        trial.acceptedThresholds = 0;
-        trial.points = static_cast<int>(r.points.rows());
-        trial.noise = r.noise;
-        for (const ThresholdDecision& d : automaticThresholds(r, coarseOptions)) {
-            if (d.accepted) {
-                trial.separation = trial.acceptedThresholds == 0
-                                       ? d.separation
-                                       : std::min(trial.separation, d.separation);
-                ++trial.acceptedThresholds;
-            }
-        }
-        return trial;
-    };
     // The coarse scales first: the region's own scale needs weighing (a labelling of all its
     // points per threshold searched) only when one of them accepts a threshold.
     RegionGeometry::ScaleTrial own;
     own.points = static_cast<int>(m);
     own.noise = g.noise;
     g.scaleTrials.push_back(own);
-    int best = 0;
-    std::shared_ptr<RegionGeometry> chosen;
-    GridCentroids chosenGrid;
-    for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
-        // A coarser scale is an offer, not a stage: one that cannot be analysed (too few or
-        // degenerate cells) ends the trials and the region keeps what it has.
-        try {
-            GridCentroids grid = gridCentroids(raw, s * g.spacing);
-            const Eigen::Index cells = grid.points.rows();
-            if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
-                break;
-            }
-            NeighbourOptions no;
-            no.k = g.neighbours.k();
-            Neighbourhoods cn = nearestNeighbours(grid.points, no);
-            const double coarseSpacing = meanSpacing(cn);
-            auto coarse = std::make_shared<RegionGeometry>(
-                analyseRegion(grid.points, std::move(cn), NormalMatrix(), g.region, coarseSpacing,
-                              coarseOptions));
-            fillRimFromInterior(*coarse, so.rimWidth * coarseSpacing);
-            g.scaleTrials.push_back(weigh(*coarse));
-            // The finer of two coarse scales on a tie.
-            if (g.scaleTrials.back().acceptedThresholds > best) {
-                best = g.scaleTrials.back().acceptedThresholds;
-                chosen = coarse;
-                chosenGrid = std::move(grid);
-            }
-            if (largestRadius(coarse->curvatureNoise) >= extent) {
-                break;
-            }
-        } catch (const std::invalid_argument&) {
-            break;
-        }
-    }
-    if (!chosen) {
+    CoarseScale chosen = weighCoarseScales(raw, extent, g, options);
+    if (!chosen.geometry) {
         return;
     }
-    g.scaleTrials.front() = weigh(g);
-    if (g.scaleTrials.front().acceptedThresholds >= best) {
+    g.scaleTrials.front() = weighScale(g, g.spacing, coarseScaleOptions(options));
+    if (g.scaleTrials.front().acceptedThresholds >= chosen.acceptedThresholds) {
         return;
     }
-    g.curvatureScale = chosen->spacing / g.spacing;
-    g.curvatureNoise = chosen->curvatureNoise;
-    g.curvature = valuesAtPoints(raw, chosenGrid, chosen->neighbours, chosen->curvature,
-                                 so.carryWidth * chosen->spacing);
-    g.coarse = std::move(chosen);
-    g.coarseRowOf = std::move(chosenGrid.cellOf);
+    g.curvatureScale = chosen.geometry->spacing / g.spacing;
+    g.curvatureNoise = chosen.geometry->curvatureNoise;
+    g.curvature =
+        valuesAtPoints(raw, chosen.grid, chosen.geometry->neighbours, chosen.geometry->curvature,
+                       so.carryWidth * chosen.geometry->spacing);
+    g.coarse = std::move(chosen.geometry);
+    g.coarseRowOf = std::move(chosen.grid.cellOf);
 }
 
 } // namespace

@@ -152,10 +152,9 @@ double lineContrast(const RegionGeometry& g, const Eigen::VectorXd& curvature, d
     return contrasts.empty() ? 0.0 : median(std::move(contrasts));
 }
 
-SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
-                                       const SmoothEdgeOptions& options,
-                                       const std::vector<int>& subset,
-                                       const std::vector<Polyline>& anchors)
+namespace {
+
+void requireLevelOptions(double threshold, const SmoothEdgeOptions& options)
 {
     if (!std::isfinite(threshold)) {
         throw std::invalid_argument("the curvature threshold must be a finite number");
@@ -167,17 +166,15 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         !(options.anchorBand >= 0.0)) {
         throw std::invalid_argument("the anchoring reach and angle must not be negative");
     }
-    const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
-    SmoothEdgeLevel level;
-    level.threshold = threshold;
-    // Islands of one side whose values stay within a few noise floors of tau are noise of
-    // the level around them, not patches: they join that level before the labels are drawn.
-    const Eigen::VectorXd curvature = withoutNoiseIslands(
-        region.curvature, threshold, region.ring, points,
-        options.islandMargin * region.curvatureNoise, minIslandPoints(region, options));
-    level.labels = labelPoints(curvature, threshold, region.ring, points, options.labels);
-    level.clusters = growLabelClusters(level.labels, region.ring, points, options.seed);
+}
 
+/// Per label cluster of the level: a candidate of the graph (Sec. 3: a small cluster), unless
+/// its points lie within the anchor band of the lines that bound the region.
+std::vector<char> candidateClusters(const RegionGeometry& region, const SmoothEdgeLevel& level,
+                                    const std::vector<int>& points,
+                                    const std::vector<Polyline>& anchors,
+                                    const SmoothEdgeOptions& options)
+{
     // Sec. 3: the small clusters ring the patches; the graph of neighbouring small clusters
     // is processed as for the sharp edges [4].
     std::vector<char> candidate(level.clusters.size.size(), 0);
@@ -202,53 +199,98 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
             }
         }
     }
-    // Open pieces are judged after their ends are anchored on the lines that bound the region
-    // (a fillet border running from one sharp edge to another is short but complete).
-    ClusterGraphOptions graphOptions = options.graph;
-    graphOptions.minOpenComponentLength = 0.0;
+    return candidate;
+}
+
+/// Per line of the graph's network: the region points of the nodes it runs through.
+std::vector<std::vector<int>> pointsOfLines(const ClusterGraph& graph, size_t lineCount)
+{
+    std::vector<std::vector<int>> pointsOfNode(static_cast<size_t>(graph.nodes.rows()));
+    for (size_t i = 0; i < graph.nodeOfPoint.size(); ++i) {
+        if (graph.nodeOfPoint[i] >= 0) {
+            pointsOfNode[static_cast<size_t>(graph.nodeOfPoint[i])].push_back(static_cast<int>(i));
+        }
+    }
+    std::vector<std::vector<int>> linePoints(lineCount);
+    for (size_t l = 0; l < graph.lineNodes.size() && l < lineCount; ++l) {
+        for (int v : graph.lineNodes[l]) {
+            if (v >= 0 && v < static_cast<int>(pointsOfNode.size())) {
+                const auto& ps = pointsOfNode[static_cast<size_t>(v)];
+                linePoints[l].insert(linePoints[l].end(), ps.begin(), ps.end());
+            }
+        }
+    }
+    return linePoints;
+}
+
+/// A line must part two levels where it runs: across it, within two fit radii, the curvature
+/// on its high side must exceed that on its low side by minLineContrast noise floors (the
+/// median over the line's candidate points). The edge of a noise island, or a drifting
+/// curvature crossing tau, has about one floor across it. Drops the lines that do not.
+void dropLinesWithoutContrast(const RegionGeometry& region, const ClusterGraph& graph,
+                              const Eigen::VectorXd& curvature, const SmoothEdgeOptions& options,
+                              SmoothEdgeLevel& level)
+{
+    if (!(options.minLineContrast > 0.0 && region.curvatureNoise > 0.0)) {
+        return;
+    }
+    const std::vector<std::vector<int>> linePoints =
+        pointsOfLines(graph, level.network.lines.size());
+    std::vector<char> weak(level.network.lines.size(), 0);
+    for (size_t l = 0; l < graph.lineNodes.size() && l < weak.size(); ++l) {
+        const double contrast = lineContrast(region, curvature, level.threshold, linePoints[l]);
+        weak[l] = contrast < options.minLineContrast * region.curvatureNoise;
+    }
+    level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));
+    std::vector<char> anchored; // none yet: the ends are anchored after
+    dropLines(level.network, anchored, weak);
+}
+
+/// The graph's lines as the region keeps them: moved onto the curvature steps when read at a
+/// coarser scale, free ends anchored on the lines around, then short spurs and open pieces with
+/// an end on nothing dropped (SmoothEdgeOptions::graph.minOpenComponentLength).
+void finishLines(const RegionGeometry& region, const std::vector<Polyline>& anchors,
+                 const SmoothEdgeOptions& options, SmoothEdgeLevel& level)
+{
+    if (options.placeCoarseLines && region.curvatureScale > 1.0) {
+        placeOnCurvatureSteps(level.network, region.points, region.normals, region.curvature,
+                              region.spacing, region.curvatureScale * region.spacing,
+                              level.threshold, options.placement);
+    }
+    std::vector<char> anchored = anchorLineEnds(
+        level.network, anchors, options.anchorReach * region.spacing, options.anchorAngle);
+    const double minOpen = options.graph.minOpenComponentLength * region.spacing;
+    level.counts.prunedBranches += pruneDanglingLines(level.network, anchored, minOpen);
+    level.counts.droppedComponents += dropOpenPieces(level.network, anchored, minOpen);
+}
+
+} // namespace
+
+SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
+                                       const SmoothEdgeOptions& options,
+                                       const std::vector<int>& subset,
+                                       const std::vector<Polyline>& anchors)
+{
+    requireLevelOptions(threshold, options);
+    const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
+    SmoothEdgeLevel level;
+    level.threshold = threshold;
+    // Islands of one side whose values stay within a few noise floors of tau are noise of
+    // the level around them, not patches: they join that level before the labels are drawn.
+    const Eigen::VectorXd curvature = withoutNoiseIslands(
+        region.curvature, threshold, region.ring, points,
+        options.islandMargin * region.curvatureNoise, minIslandPoints(region, options));
+    level.labels = labelPoints(curvature, threshold, region.ring, points, options.labels);
+    level.clusters = growLabelClusters(level.labels, region.ring, points, options.seed);
+    const std::vector<char> candidate = candidateClusters(region, level, points, anchors, options);
+    const ClusterGraphOptions graphOptions = smoothGraphOptions(options);
     const ClusterGraph graph =
         buildClusterGraph(region.points, region.neighbours, level.clusters.cluster, candidate,
                           region.spacing, graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
-    // A line must part two levels where it runs: across it, within two fit radii, the
-    // curvature on its high side must exceed that on its low side by minLineContrast noise
-    // floors (the median over the line's candidate points). The edge of a noise island, or a
-    // drifting curvature crossing tau, has about one floor across it.
-    std::vector<char> anchored;
-    if (options.minLineContrast > 0.0 && region.curvatureNoise > 0.0) {
-        std::vector<std::vector<int>> pointsOfNode(static_cast<size_t>(graph.nodes.rows()));
-        for (size_t i = 0; i < graph.nodeOfPoint.size(); ++i) {
-            if (graph.nodeOfPoint[i] >= 0) {
-                pointsOfNode[static_cast<size_t>(graph.nodeOfPoint[i])].push_back(
-                    static_cast<int>(i));
-            }
-        }
-        std::vector<char> weak(level.network.lines.size(), 0);
-        for (size_t l = 0; l < graph.lineNodes.size() && l < weak.size(); ++l) {
-            std::vector<int> linePoints;
-            for (int v : graph.lineNodes[l]) {
-                if (v >= 0 && v < static_cast<int>(pointsOfNode.size())) {
-                    const auto& ps = pointsOfNode[static_cast<size_t>(v)];
-                    linePoints.insert(linePoints.end(), ps.begin(), ps.end());
-                }
-            }
-            const double contrast = lineContrast(region, curvature, threshold, linePoints);
-            weak[l] = contrast < options.minLineContrast * region.curvatureNoise;
-        }
-        level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));
-        dropLines(level.network, anchored, weak);
-    }
-    if (options.placeCoarseLines && region.curvatureScale > 1.0) {
-        placeOnCurvatureSteps(level.network, region.points, region.normals, region.curvature,
-                              region.spacing, region.curvatureScale * region.spacing, threshold,
-                              options.placement);
-    }
-    anchored = anchorLineEnds(level.network, anchors, options.anchorReach * region.spacing,
-                              options.anchorAngle);
-    const double minOpen = options.graph.minOpenComponentLength * region.spacing;
-    level.counts.prunedBranches += pruneDanglingLines(level.network, anchored, minOpen);
-    level.counts.droppedComponents += dropOpenPieces(level.network, anchored, minOpen);
+    dropLinesWithoutContrast(region, graph, curvature, options, level);
+    finishLines(region, anchors, options, level);
     return level;
 }
 

@@ -24,6 +24,18 @@ struct SmoothEdgeLevel
     ClusterGraphCounts counts;
 };
 
+/// The graph options of the smooth stage: options.graph without its open-piece filter
+/// (minOpenComponentLength = 0). Open pieces are judged after their ends are anchored on the
+/// lines that bound the region (a fillet border running from one sharp edge to another is
+/// short but complete): smoothEdgesAtThreshold applies options.graph.minOpenComponentLength
+/// then.
+inline ClusterGraphOptions smoothGraphOptions(const SmoothEdgeOptions& options)
+{
+    ClusterGraphOptions graph = options.graph;
+    graph.minOpenComponentLength = 0.0;
+    return graph;
+}
+
 /// Sec. 3 at threshold tau over the whole region, or over `subset` (region point indices)
 /// only, as the multi-step refinement does. Noise islands are levelled before the labels
 /// (SmoothEdgeOptions::islandMargin); lines without contrast across them are dropped

@@ -106,3 +106,16 @@ TEST(SmoothEdgeLevel, ARegionOfOneLevelHasNoLine)
         }
     }
 }
+
+TEST(SmoothEdgeLevel, TheGraphLeavesOpenPiecesToTheAnchoredLines)
+{
+    // The graph drops no open piece (the level drops them once their ends are anchored); every
+    // other graph option is the caller's.
+    SmoothEdgeOptions options;
+    options.graph.minOpenComponentLength = 12.0;
+    options.graph.maxBubbleLength = 7.0;
+    const ClusterGraphOptions graph = smoothGraphOptions(options);
+    EXPECT_EQ(graph.minOpenComponentLength, 0.0);
+    EXPECT_EQ(graph.maxBubbleLength, 7.0);
+    EXPECT_EQ(options.graph.minOpenComponentLength, 12.0);
+}
