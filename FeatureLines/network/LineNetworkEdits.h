@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Edits of a line network after the cluster graph: free ends anchored on other lines, lines
 // dropped (their junctions mended), dangling spurs pruned, short open pieces dropped.
+// Design: docs/design/smooth-edges.md, "Editing the line network".
 #pragma once
 
 #include <vector>
@@ -9,11 +10,10 @@
 
 namespace featurelines {
 
-/// Sec. 1.2: the smooth edges of a region end on the sharp edges (or the boundary) around it,
-/// but the region stops a band short of them. Every free end (no junction) of an open line
-/// that lies within `reach` of an anchor line, and points towards it (within
-/// maxAngleDegrees of the line's direction at that end), is extended to the closest point of
-/// the anchor lines. Returns per line two flags, start and end: anchored.
+/// Sec. 1.2: every free end (no junction) of an open line that lies within `reach` of an anchor
+/// line, and points towards it (within maxAngleDegrees of the line's direction at that end), is
+/// extended to the closest point of the anchor lines. Returns per line two flags, start and end:
+/// anchored.
 std::vector<char> anchorLineEnds(LineNetwork& network, const std::vector<Polyline>& anchors,
                                  double reach, double maxAngleDegrees);
 

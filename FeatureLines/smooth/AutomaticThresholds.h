@@ -2,6 +2,7 @@
 // The thresholds of a region (Sec. 2.2-2.4 of the 2008 paper): the histogram search on its
 // curvature, and the automatic mode that searches and weighs thresholds until the region's
 // curvature levels are parted.
+// Design: docs/design/smooth-edges.md, "Thresholds".
 #pragma once
 
 #include <vector>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The multi-step refinement inside one large cluster (Sec. 4, Fig. 13 e of the 2008 paper).
+// Design: docs/design/smooth-edges.md, "Refinement inside one large cluster".
 #pragma once
 
 #include "FeatureLines/smooth/RegionGeometry.h"

@@ -2,6 +2,7 @@
 // The closed lines of a region at one curvature threshold (Sec. 3 of the 2008 paper): the
 // low / inner / border labels, region growing on them, and the cluster graph that turns the
 // single-point clusters into lines, anchored on the sharp and boundary lines around.
+// Design: docs/design/smooth-edges.md, "The lines at one threshold".
 #pragma once
 
 #include <vector>
@@ -25,10 +26,9 @@ struct SmoothEdgeLevel
 };
 
 /// The graph options of the smooth stage: options.graph without its open-piece filter
-/// (minOpenComponentLength = 0). Open pieces are judged after their ends are anchored on the
-/// lines that bound the region (a fillet border running from one sharp edge to another is
-/// short but complete): smoothEdgesAtThreshold applies options.graph.minOpenComponentLength
-/// then.
+/// (minOpenComponentLength = 0). smoothEdgesAtThreshold applies that filter once the line ends
+/// are anchored on the lines that bound the region: a fillet border running from one sharp
+/// edge to another is short but complete.
 inline ClusterGraphOptions smoothGraphOptions(const SmoothEdgeOptions& options)
 {
     ClusterGraphOptions graph = options.graph;
@@ -47,14 +47,11 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
                                        const std::vector<int>& subset = {},
                                        const std::vector<Polyline>& anchors = {});
 
-/// The contrast across a line at threshold tau that smoothEdgesAtThreshold asks of it
-/// (minLineContrast, in noise floors): the median over the line's `points` (region point
-/// indices) of the local contrast, the median curvature above tau minus that at or below it
-/// among the points within two fit radii (two hops of the neighbourhoods); points with values
-/// on one side only count not, and 0 when none is left. Where the region's curvature was read
-/// at a coarser scale (RegionGeometry::coarse) it is taken there, at the cells the points were
-/// averaged into: the carried-back values cross tau over the coarse fit's width, of which two
-/// fit radii of the region's own sampling see only part.
+/// The contrast across a line at threshold tau (1 / length unit; minLineContrast): the median
+/// over the line's `points` (region point indices) of the local contrast, the median curvature
+/// above tau minus that at or below it within two fit radii; points with values on one side
+/// only count not, and 0 when none is left. At a coarser curvature scale (RegionGeometry::
+/// coarse) it is taken there, at the cells the points were averaged into.
 double lineContrast(const RegionGeometry& region, const Eigen::VectorXd& curvature, double tau,
                     const std::vector<int>& points);
 
