@@ -137,6 +137,38 @@ double straddleShare(const RegionGeometry& g, const std::vector<PointLabel>& lab
     return static_cast<double>(straddling) / static_cast<double>(count);
 }
 
+/// Per set root of `root` (a representative per point), its number of points; points whose
+/// `state` is `outside` count not. Counted in runs of points of one set (rows in Morton order:
+/// long runs).
+std::vector<int> setSizes(const std::vector<int>& root, const std::vector<char>& state,
+                          char outside)
+{
+    const Eigen::Index n = static_cast<Eigen::Index>(root.size());
+    std::vector<int> size(static_cast<size_t>(n), 0);
+#pragma omp parallel
+    {
+        int current = -1, run = 0;
+#pragma omp for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const int r = state[i] == outside ? -1 : root[i];
+            if (r != current) {
+                if (run > 0) {
+#pragma omp atomic
+                    size[current] += run;
+                }
+                current = r;
+                run = 0;
+            }
+            run += r >= 0 ? 1 : 0;
+        }
+        if (run > 0) {
+#pragma omp atomic
+            size[current] += run;
+        }
+    }
+    return size;
+}
+
 /// The largest patches of the curvature levels (low, tau] and (tau, high]: points with values
 /// in the level whose whole 1-ring is in it too (the inner points of Sec. 3 for that level),
 /// connected through the 1-rings; returns their numbers of points, {above, below}. Both levels
@@ -183,30 +215,8 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
             }
         }
     }
-    // Sizes per set, counted in runs of points of one set (rows in Morton order: long runs).
     const std::vector<int> root = sets.representatives();
-    std::vector<int> size(static_cast<size_t>(n), 0);
-#pragma omp parallel
-    {
-        int current = -1, run = 0;
-#pragma omp for schedule(static, 4096)
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const int r = state[i] == outside ? -1 : root[i];
-            if (r != current) {
-                if (run > 0) {
-#pragma omp atomic
-                    size[current] += run;
-                }
-                current = r;
-                run = 0;
-            }
-            run += r >= 0 ? 1 : 0;
-        }
-        if (run > 0) {
-#pragma omp atomic
-            size[current] += run;
-        }
-    }
+    const std::vector<int> size = setSizes(root, state, outside);
     int largestAbove = 0, largestBelow = 0;
 #pragma omp parallel for schedule(static, 4096) reduction(max : largestAbove, largestBelow)
     for (Eigen::Index i = 0; i < n; ++i) {

@@ -99,6 +99,53 @@ Eigen::VectorXd regionCurvature(const PointMatrix& P, const NormalMatrix& normal
     return options.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs());
 }
 
+/// The curvature noise floor per unit of estimated noise, measured on a flat patch sampled as a
+/// scan (SyntheticNoiseOptions) with noise of 1.05^step spacings, smoothed (when `smoothed`),
+/// fitted with k neighbours and averaged `averaging` times as the region is.
+double measuredNoiseFloor(int step, int k, bool smoothed, int averaging,
+                          const SmoothEdgeOptions& options)
+{
+    const SmoothingOptions& so = options.smoothingOptions;
+    const SyntheticNoiseOptions& sn = options.noiseFloor;
+    const int side = sn.patchSide;
+    std::mt19937 rng(sn.seed);
+    std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    PointMatrix P(side * side, 3);
+    for (int j = 0; j < side; ++j) {
+        for (int i = 0; i < side; ++i) {
+            P.row(j * side + i) << i + jitter(rng), j + jitter(rng), gauss(rng);
+        }
+    }
+    NeighbourOptions no;
+    no.k = k;
+    // The grid's mean spacing, then heights of 1.05^step spacings over the estimate's
+    // 0.9 sigma (see estimateNoise).
+    PointMatrix flat = P;
+    flat.col(2).setZero();
+    const double cell = meanSpacing(nearestNeighbours(flat, no));
+    P.col(2) *= std::exp(step * std::log(1.05)) / 0.9 * cell;
+    const Neighbourhoods N = nearestNeighbours(P, no);
+    const double spacing = meanSpacing(N);
+    NormalMatrix normals = pcaNormals(P, N).normals;
+    const double estimated = estimateNoise(P, normals, N, spacing);
+    if (smoothed) {
+        P = laplacianSmooth(P, N, allIndices(P.rows()), so);
+        normals = pcaNormals(P, N).normals;
+    }
+    const Eigen::VectorXd H = regionCurvature(P, normals, N, averaging, options.curvature);
+    // Away from the patch's rim, where smoothing and fits are one-sided.
+    std::vector<double> interior;
+    const int margin = side / 4;
+    for (int j = margin; j < side - margin; ++j) {
+        for (int i = margin; i < side - margin; ++i) {
+            interior.push_back(std::abs(H[j * side + i]) * spacing);
+        }
+    }
+    // |H| of a flat face is folded normal noise: its median is 0.674 deviations.
+    return estimated > 0.0 ? median(std::move(interior)) / 0.6745 / estimated : 0.0;
+}
+
 /// The curvature noise floor (x 1 / spacing) of a region with estimated noise `noise` (x
 /// spacing): a flat patch sampled as a scan (a jittered grid) with normal noise goes through
 /// the same smoothing, fit and averaging as the region; the spread of its curvature is the
@@ -132,61 +179,16 @@ double curvatureNoiseFloor(double noise, int k, bool smoothed, const SmoothEdgeO
         }
     }
     if (perNoise == 0.0) {
-        const int side = sn.patchSide;
-        std::mt19937 rng(sn.seed);
-        std::uniform_real_distribution<double> jitter(-0.25, 0.25);
-        std::normal_distribution<double> gauss(0.0, 1.0);
-        PointMatrix P(side * side, 3);
-        for (int j = 0; j < side; ++j) {
-            for (int i = 0; i < side; ++i) {
-                P.row(j * side + i) << i + jitter(rng), j + jitter(rng), gauss(rng);
-            }
-        }
-        NeighbourOptions no;
-        no.k = k;
-        // The grid's mean spacing, then heights of `level` spacings over the estimate's
-        // 0.9 sigma (see estimateNoise).
-        PointMatrix flat = P;
-        flat.col(2).setZero();
-        const double cell = meanSpacing(nearestNeighbours(flat, no));
-        P.col(2) *= std::exp(step * std::log(1.05)) / 0.9 * cell;
-        const Neighbourhoods N = nearestNeighbours(P, no);
-        const double spacing = meanSpacing(N);
-        NormalMatrix normals = pcaNormals(P, N).normals;
-        const double estimated = estimateNoise(P, normals, N, spacing);
-        if (smoothed) {
-            std::vector<int> all(static_cast<size_t>(P.rows()));
-            std::iota(all.begin(), all.end(), 0);
-            P = laplacianSmooth(P, N, all, so);
-            normals = pcaNormals(P, N).normals;
-        }
-        const Eigen::VectorXd H = regionCurvature(P, normals, N, averaging, options.curvature);
-        // Away from the patch's rim, where smoothing and fits are one-sided.
-        std::vector<double> interior;
-        const int margin = side / 4;
-        for (int j = margin; j < side - margin; ++j) {
-            for (int i = margin; i < side - margin; ++i) {
-                interior.push_back(std::abs(H[j * side + i]) * spacing);
-            }
-        }
-        // |H| of a flat face is folded normal noise: its median is 0.674 deviations.
-        perNoise = estimated > 0.0 ? median(std::move(interior)) / 0.6745 / estimated : 0.0;
+        perNoise = measuredNoiseFloor(step, k, smoothed, averaging, options);
         std::lock_guard<std::mutex> lock(mutex);
         cache[key] = perNoise;
     }
     return noise * perNoise;
 }
 
-/// The curvature of a coarse region near its rim replaced by the values of its interior. At the
-/// rim the fit and the smoothing see one side only, and their bias (the curvature of a
-/// cylinder rises by half within a few spacings of a cut) spreads over a few coarse spacings,
-/// a band many fine spacings wide that the sharp lines' band (SmoothRegionOptions::bandWidth)
-/// no longer covers: its values would form a level of their own along every sharp edge. The
-/// points within `width` (length unit, along the neighbourhoods) of a rim point (an empty
-/// sector in its neighbourhood, boundaryPoints) take, from the innermost outwards, the mean of
-/// their neighbours' values that are known: a fillet running into a sharp edge keeps its
-/// level up to the edge. A region that is all rim keeps its values.
-void fillRimFromInterior(RegionGeometry& g, double width)
+/// The points within `width` (length unit, along the neighbourhoods) of the rim of a coarse
+/// region, nearest the rim first.
+std::vector<int> rimBand(const RegionGeometry& g, double width)
 {
     const Eigen::Index n = g.points.rows();
     const Neighbourhoods& N = g.neighbours;
@@ -224,6 +226,23 @@ void fillRimFromInterior(RegionGeometry& g, double width)
             }
         }
     }
+    return band;
+}
+
+/// The curvature of a coarse region near its rim replaced by the values of its interior. At the
+/// rim the fit and the smoothing see one side only, and their bias (the curvature of a
+/// cylinder rises by half within a few spacings of a cut) spreads over a few coarse spacings,
+/// a band many fine spacings wide that the sharp lines' band (SmoothRegionOptions::bandWidth)
+/// no longer covers: its values would form a level of their own along every sharp edge. The
+/// points within `width` (length unit, along the neighbourhoods) of a rim point (an empty
+/// sector in its neighbourhood, boundaryPoints) take, from the innermost outwards, the mean of
+/// their neighbours' values that are known: a fillet running into a sharp edge keeps its
+/// level up to the edge. A region that is all rim keeps its values.
+void fillRimFromInterior(RegionGeometry& g, double width)
+{
+    const Eigen::Index n = g.points.rows();
+    const Neighbourhoods& N = g.neighbours;
+    const std::vector<int> band = rimBand(g, width);
     if (band.size() == static_cast<size_t>(n)) {
         return;
     }
