@@ -19,6 +19,7 @@
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
+#include "FeatureLines/smooth/SmoothEdgeLevel.h"
 
 namespace featurelines {
 

@@ -15,7 +15,9 @@
 
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/sharp/SharpEdges.h"
-#include "FeatureLines/smooth/SmoothEdges.h"
+#include "FeatureLines/smooth/AutomaticThresholds.h"
+#include "FeatureLines/smooth/RegionGeometry.h"
+#include "FeatureLines/smooth/SmoothEdgeOptions.h"
 #include "FeatureLines/smooth/SmoothRegions.h"
 
 namespace featurelines {

@@ -15,7 +15,8 @@
 #include "FeatureLines/Extraction.h"
 #include "FeatureLines/curvature/CurvatureScale.h"
 #include "FeatureLines/neighbourhoods/Neighbours.h"
-#include "FeatureLines/smooth/SmoothEdges.h"
+#include "FeatureLines/smooth/AutomaticThresholds.h"
+#include "FeatureLines/smooth/RegionGeometry.h"
 #include "SampledShapes.h"
 
 using namespace featurelines;
