@@ -261,6 +261,24 @@ constexpr int width = 6;
 /// Margins for rounding in steps: positions are exact to about 1e-9 step.
 constexpr double stepMargin = 1e-3;
 
+/// Calls visit(dx, dy, dz, code) for each of the 27 cells cc + (dx, dy, dz) inside the grid
+/// [0, top]^3 (code: the cell's Morton key), dz slowest, dx fastest.
+template <class Visit>
+void forEachCellAround(const std::int64_t cc[3], std::int64_t top, const Visit& visit)
+{
+    for (int dz = -1; dz <= 1; ++dz) {
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
+                    continue;
+                }
+                visit(dx, dy, dz, mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
+            }
+        }
+    }
+}
+
 /// A run of rows of the key order: the points of one sub-cell.
 struct Run
 {
@@ -387,23 +405,14 @@ std::size_t CellSearch::gatherBlock(const std::int64_t cc[3], std::vector<Run>& 
 {
     std::fill(table.begin(), table.end(), Run{});
     std::size_t blockPoints = 0;
-    for (int dz = -1; dz <= 1; ++dz) {
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
-                if (x < 0 || y < 0 || z < 0 || x > lastCell_ || y > lastCell_ || z > lastCell_) {
-                    continue;
-                }
-                const int other =
-                    cells_.find(mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
-                if (other < 0) {
-                    continue;
-                }
-                blockPoints += static_cast<std::size_t>(cells_.end(other) - cells_.first(other));
-                addSubCells(other, dx, dy, dz, table);
-            }
+    forEachCellAround(cc, lastCell_, [&](int dx, int dy, int dz, std::uint64_t code) {
+        const int other = cells_.find(code);
+        if (other < 0) {
+            return;
         }
-    }
+        blockPoints += static_cast<std::size_t>(cells_.end(other) - cells_.first(other));
+        addSubCells(other, dx, dy, dz, table);
+    });
     return blockPoints;
 }
 
@@ -534,30 +543,20 @@ std::size_t CellSearch::gatherWide(Eigen::Index j, const std::int64_t cc[3], int
                                    std::int64_t top, Candidates& c) const
 {
     std::size_t count = 0;
-    for (int dz = -1; dz <= 1; ++dz) {
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
-                if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
-                    continue;
-                }
-                const std::uint64_t code =
-                    mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z));
-                const auto from = std::lower_bound(keys_.begin(), keys_.end(), code << (3 * l));
-                const auto to = std::lower_bound(from, keys_.end(), (code + 1) << (3 * l));
-                for (auto at = from; at != to; ++at) {
-                    const Eigen::Index r = at - keys_.begin();
-                    if (r == j) {
-                        continue;
-                    }
-                    c.reserve(count + 1);
-                    c.distance[count] = (Q_.row(r) - Q_.row(j)).squaredNorm();
-                    c.index[count] = order_.rowOf(r);
-                    ++count;
-                }
+    forEachCellAround(cc, top, [&](int, int, int, std::uint64_t code) {
+        const auto from = std::lower_bound(keys_.begin(), keys_.end(), code << (3 * l));
+        const auto to = std::lower_bound(from, keys_.end(), (code + 1) << (3 * l));
+        for (auto at = from; at != to; ++at) {
+            const Eigen::Index r = at - keys_.begin();
+            if (r == j) {
+                continue;
             }
+            c.reserve(count + 1);
+            c.distance[count] = (Q_.row(r) - Q_.row(j)).squaredNorm();
+            c.index[count] = order_.rowOf(r);
+            ++count;
         }
-    }
+    });
     return count;
 }
 
