@@ -190,6 +190,31 @@ int runCurvature(const Arguments& a)
 
 // ---- threshold ----------------------------------------------------------------------------
 
+/// The L + 1 edges of the histogram's bins.
+std::vector<double> binEdges(const Histogram& h)
+{
+    std::vector<double> edges(h.counts.size() + 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        edges[i] = h.minimum + static_cast<double>(i) * h.binWidth;
+    }
+    if (h.binWidth > 0.0) {
+        edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
+    }
+    return edges;
+}
+
+/// The histogram as a JSON object: its range, bin width and counts.
+std::string histogramJson(const Histogram& h)
+{
+    using namespace json;
+    Object histogram;
+    histogram.add("minimum", number(h.minimum))
+        .add("maximum", number(h.maximum))
+        .add("bin_width", number(h.binWidth))
+        .add("counts", array(h.counts));
+    return histogram.str();
+}
+
 int runThreshold(const Arguments& a)
 {
     const std::string input = inputPath(a);
@@ -227,20 +252,7 @@ int runThreshold(const Arguments& a)
                   << "high points: " << high << "\n";
         return 0;
     }
-    const Histogram& h = r.histogram;
-    std::vector<double> edges(h.counts.size() + 1);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-        edges[i] = h.minimum + static_cast<double>(i) * h.binWidth;
-    }
-    if (h.binWidth > 0.0) {
-        edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
-    }
     using namespace json;
-    Object histogram;
-    histogram.add("minimum", number(h.minimum))
-        .add("maximum", number(h.maximum))
-        .add("bin_width", number(h.binWidth))
-        .add("counts", array(h.counts));
     Object result;
     result.add("points", number(static_cast<long>(values.size())))
         .add("threshold", number(r.threshold))
@@ -255,8 +267,8 @@ int runThreshold(const Arguments& a)
         .add("search",
              string(options.search == ThresholdSearch::SingleRun ? "single-run" : "all-starts"))
         .add("range", string(below ? "below" : (above ? "above" : "all")))
-        .add("histogram", histogram.str())
-        .add("bin_edges", array(edges));
+        .add("histogram", histogramJson(r.histogram))
+        .add("bin_edges", array(binEdges(r.histogram)));
     std::cout << result.str() << "\n";
     return 0;
 }
