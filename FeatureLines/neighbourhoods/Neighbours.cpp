@@ -295,17 +295,29 @@ struct Worker
     double guess = 0.0;
 };
 
+/// What the search runs on: the points Q in key order (order.points(P)), their grid, order
+/// and cells at `level`, and the neighbours wanted per point.
+struct CellSearchInput
+{
+    const MortonGrid& grid;
+    const PointMatrix& Q;
+    const KeyOrder& order;
+    const Cells& cells;
+    int level;
+    int k;
+};
+
 /// The exact search over the cells of one level of the key order, writing into `result`.
 class CellSearch
 {
 public:
-    CellSearch(const MortonGrid& grid, const PointMatrix& Q, const KeyOrder& order,
-               const Cells& cells, int level, int k, Neighbourhoods& result)
-        : grid_(grid), Q_(Q), order_(order), keys_(order.keys), cells_(cells), level_(level), k_(k),
-          result_(result), subLevel_(level - 1), subSteps_(double(std::uint64_t(1) << subLevel_)),
-          lastCell_((std::int64_t(1) << (mortonBitsPerAxis - level)) - 1),
+    CellSearch(const CellSearchInput& in, Neighbourhoods& result)
+        : grid_(in.grid), Q_(in.Q), order_(in.order), keys_(in.order.keys), cells_(in.cells),
+          level_(in.level), k_(in.k), result_(result), subLevel_(in.level - 1),
+          subSteps_(double(std::uint64_t(1) << subLevel_)),
+          lastCell_((std::int64_t(1) << (mortonBitsPerAxis - in.level)) - 1),
           lastSub_((std::int64_t(1) << (mortonBitsPerAxis - subLevel_)) - 1),
-          oneStep_(1.0 / grid.scale)
+          oneStep_(1.0 / in.grid.scale)
     {
     }
 
@@ -599,7 +611,8 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     releaseIdleThreads(); // the level and the cells' hash table are serial
     const int level = searchLevel(order.keys, n, k);
     const Cells cells(order.keys, level);
-    CellSearch(grid, order.points(P), order, cells, level, k, result).run(threads);
+    const CellSearchInput in{grid, order.points(P), order, cells, level, k};
+    CellSearch(in, result).run(threads);
     return result;
 }
 
