@@ -306,113 +306,152 @@ RegionAnalysis analyseRegions(const CloudGeometry& cloud, const ExtractionOption
     return analyseRegionsOf(cloud, nullptr, options);
 }
 
-ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAnalysis& analysis,
-                                     const ExtractionOptions& options)
-{
-    ExtractionResult result;
-    result.spacing = cloud.spacing;
-    const Eigen::Index n = cloud.points.rows();
+namespace {
 
-    for (const Polyline& line : analysis.sharp.network.lines) {
+/// The per-point results on the distinct points (CloudGeometry::points), before they are
+/// copied to the input points.
+struct DistinctPointResults
+{
+    std::vector<int> region;
+    std::vector<int> patch;
+    std::vector<PointLabel> label;
+    Eigen::VectorXd curvature;
+
+    explicit DistinctPointResults(Eigen::Index n)
+        : region(static_cast<size_t>(n), -1), patch(static_cast<size_t>(n), -1),
+          label(static_cast<size_t>(n), PointLabel::Outside),
+          curvature(Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN()))
+    {
+    }
+};
+
+/// The sharp and boundary lines, and their junctions, as the result's first lines.
+void addSharpLines(const SharpEdges& sharp, ExtractionResult& result)
+{
+    for (const Polyline& line : sharp.network.lines) {
         result.lines.push_back(toFeatureLine(
             line, line.label == boundaryLineLabel ? LineType::Boundary : LineType::Sharp, 0));
     }
-    result.junctions = analysis.sharp.network.junctions;
+    result.junctions = sharp.network.junctions;
+}
 
-    std::vector<int> region(static_cast<size_t>(n), -1);
-    std::vector<int> patch(static_cast<size_t>(n), -1);
-    std::vector<PointLabel> label(static_cast<size_t>(n), PointLabel::Outside);
-    Eigen::VectorXd curvature =
-        Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
-    int patches = 0;
-    for (size_t r = 0; r < analysis.geometry.size(); ++r) {
-        const RegionGeometry& g = analysis.geometry[r];
-        report(options.progress, 0.8 + 0.2 * static_cast<double>(r) / analysis.geometry.size(),
-               "smooth edges of region " + std::to_string(r + 1));
-        RegionReport rr;
-        rr.region = g.region;
-        rr.points = static_cast<int>(g.members.size());
-        rr.noise = g.noise;
-        rr.smoothed = g.smoothed;
-        rr.curvatureScale = g.curvatureScale;
-        rr.scaleTrials = g.scaleTrials;
-        rr.thresholds = regionThresholdList(g, options, rr);
-        if (!rr.decisions.empty()) {
-            // The automatic search starts with this very search, on all the region's values.
-            rr.histogram = rr.decisions.front().result.histogram;
-        } else {
-            try {
-                rr.histogram = regionThreshold(g, options.smooth).histogram;
-            } catch (const std::invalid_argument&) {
-                // One curvature value only: an empty histogram tells the user there is no
-                // valley.
-            }
+/// The report of region g: its geometry's facts, its thresholds (regionThresholdList) and the
+/// histogram of its first threshold search.
+RegionReport regionReport(const RegionGeometry& g, const ExtractionOptions& options)
+{
+    RegionReport rr;
+    rr.region = g.region;
+    rr.points = static_cast<int>(g.members.size());
+    rr.noise = g.noise;
+    rr.smoothed = g.smoothed;
+    rr.curvatureScale = g.curvatureScale;
+    rr.scaleTrials = g.scaleTrials;
+    rr.thresholds = regionThresholdList(g, options, rr);
+    if (!rr.decisions.empty()) {
+        // The automatic search starts with this very search, on all the region's values.
+        rr.histogram = rr.decisions.front().result.histogram;
+    } else {
+        try {
+            rr.histogram = regionThreshold(g, options.smooth).histogram;
+        } catch (const std::invalid_argument&) {
+            // One curvature value only: an empty histogram tells the user there is no
+            // valley.
         }
+    }
+    return rr;
+}
 
-        // The levels and the patches are independent of each other: each level runs on a
-        // thread of its own (most of its work walks the 1-rings one point after another). The
-        // patches run beside them when the levels leave a thread idle, else after them on
-        // every thread.
-        const int levels = static_cast<int>(rr.thresholds.size());
-        const bool patchesBeside = levels % std::max(1, omp_get_max_threads()) != 0;
-        const int items = levels + (patchesBeside ? 1 : 0);
-        std::vector<SmoothEdgeLevel> edgesAt(rr.thresholds.size());
-        std::vector<int> patchOf;
-        int nextPatch = patches;
-        std::vector<std::exception_ptr> failure(static_cast<size_t>(items));
+/// The smooth edges of one region at each of its thresholds, and its patches.
+struct RegionEdges
+{
+    std::vector<SmoothEdgeLevel> levels;
+    std::vector<int> patchOf;
+    /// The next free patch number after the region's.
+    int nextPatch = 0;
+};
+
+/// The smooth edges of region g at each threshold and its patches, numbered from firstPatch.
+/// The levels and the patches are independent of each other: each level runs on a thread of
+/// its own (most of its work walks the 1-rings one point after another). The patches run
+/// beside them when the levels leave a thread idle, else after them on every thread.
+RegionEdges smoothEdgesAndPatches(const RegionGeometry& g, const std::vector<double>& thresholds,
+                                  const SharpEdges& sharp, const ExtractionOptions& options,
+                                  int firstPatch)
+{
+    const int levels = static_cast<int>(thresholds.size());
+    const bool patchesBeside = levels % std::max(1, omp_get_max_threads()) != 0;
+    const int items = levels + (patchesBeside ? 1 : 0);
+    RegionEdges edges;
+    edges.levels.resize(thresholds.size());
+    int nextPatch = firstPatch;
+    std::vector<std::exception_ptr> failure(static_cast<size_t>(items));
 #pragma omp parallel for schedule(dynamic, 1) if (items > 1)
-        for (int item = 0; item < items; ++item) {
-            try {
-                if (item < levels) {
-                    // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the
-                    // region.
-                    edgesAt[item] = smoothEdgesAtThreshold(g, rr.thresholds[item], options.smooth,
-                                                           {}, analysis.sharp.network.lines);
-                } else {
-                    nextPatch = labelPatches(g, rr.thresholds, patches, patchOf);
-                }
-            } catch (...) {
-                failure[item] = std::current_exception();
+    for (int item = 0; item < items; ++item) {
+        try {
+            if (item < levels) {
+                // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the
+                // region.
+                edges.levels[item] = smoothEdgesAtThreshold(g, thresholds[item], options.smooth, {},
+                                                            sharp.network.lines);
+            } else {
+                nextPatch = labelPatches(g, thresholds, firstPatch, edges.patchOf);
             }
-        }
-        for (const std::exception_ptr& e : failure) {
-            if (e) {
-                std::rethrow_exception(e);
-            }
-        }
-        patches = patchesBeside ? nextPatch : labelPatches(g, rr.thresholds, patches, patchOf);
-        std::vector<PointLabel> firstLabels;
-        for (size_t level = 0; level < rr.thresholds.size(); ++level) {
-            const SmoothEdgeLevel& edges = edgesAt[level];
-            const int offset = static_cast<int>(result.junctions.rows());
-            for (const Polyline& line : edges.network.lines) {
-                FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);
-                f.region = g.region;
-                f.level = static_cast<int>(level);
-                f.threshold = rr.thresholds[level];
-                result.lines.push_back(std::move(f));
-            }
-            appendJunctions(result.junctions, edges.network.junctions);
-            if (level == 0) {
-                firstLabels = edges.labels;
-            }
-        }
-        for (size_t i = 0; i < g.members.size(); ++i) {
-            const int p = g.members[i];
-            region[p] = g.region;
-            patch[p] = patchOf[i];
-            label[p] = firstLabels.empty() ? PointLabel::Low : firstLabels[i];
-            curvature[p] = g.curvature[static_cast<Eigen::Index>(i)];
-        }
-        result.regions.push_back(std::move(rr));
-    }
-    if (!options.smoothEdges) {
-        for (Eigen::Index p = 0; p < n; ++p) {
-            region[p] = analysis.regions.region[p];
+        } catch (...) {
+            failure[item] = std::current_exception();
         }
     }
+    for (const std::exception_ptr& e : failure) {
+        if (e) {
+            std::rethrow_exception(e);
+        }
+    }
+    edges.nextPatch =
+        patchesBeside ? nextPatch : labelPatches(g, thresholds, firstPatch, edges.patchOf);
+    return edges;
+}
 
-    // Per input point, through the merge of duplicates (serial copies).
+/// Appends the smooth lines of region g (its report rr) and their junctions to the result;
+/// returns the labels at its first threshold (empty when it has none).
+std::vector<PointLabel> addSmoothLines(const RegionGeometry& g, const RegionReport& rr,
+                                       const RegionEdges& edges, ExtractionResult& result)
+{
+    std::vector<PointLabel> firstLabels;
+    for (size_t level = 0; level < rr.thresholds.size(); ++level) {
+        const SmoothEdgeLevel& atLevel = edges.levels[level];
+        const int offset = static_cast<int>(result.junctions.rows());
+        for (const Polyline& line : atLevel.network.lines) {
+            FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);
+            f.region = g.region;
+            f.level = static_cast<int>(level);
+            f.threshold = rr.thresholds[level];
+            result.lines.push_back(std::move(f));
+        }
+        appendJunctions(result.junctions, atLevel.network.junctions);
+        if (level == 0) {
+            firstLabels = atLevel.labels;
+        }
+    }
+    return firstLabels;
+}
+
+/// Region, patch, label and curvature of the members of region g.
+void setRegionPoints(const RegionGeometry& g, const std::vector<int>& patchOf,
+                     const std::vector<PointLabel>& firstLabels, DistinctPointResults& points)
+{
+    for (size_t i = 0; i < g.members.size(); ++i) {
+        const int p = g.members[i];
+        points.region[p] = g.region;
+        points.patch[p] = patchOf[i];
+        points.label[p] = firstLabels.empty() ? PointLabel::Low : firstLabels[i];
+        points.curvature[p] = g.curvature[static_cast<Eigen::Index>(i)];
+    }
+}
+
+/// The per-point results for every input point, through the merge of duplicates (serial
+/// copies).
+void copyToInputPoints(const CloudGeometry& cloud, const DistinctPointResults& points,
+                       ExtractionResult& result)
+{
     releaseIdleThreads();
     const size_t inputs = cloud.inputToPoint.size();
     result.region.resize(inputs);
@@ -421,11 +460,41 @@ ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAna
     result.curvature.resize(static_cast<Eigen::Index>(inputs));
     for (size_t i = 0; i < inputs; ++i) {
         const int p = cloud.inputToPoint[i];
-        result.region[i] = region[p];
-        result.patch[i] = patch[p];
-        result.label[i] = label[p];
-        result.curvature[static_cast<Eigen::Index>(i)] = curvature[p];
+        result.region[i] = points.region[p];
+        result.patch[i] = points.patch[p];
+        result.label[i] = points.label[p];
+        result.curvature[static_cast<Eigen::Index>(i)] = points.curvature[p];
     }
+}
+
+} // namespace
+
+ExtractionResult extractFeatureLines(const CloudGeometry& cloud, const RegionAnalysis& analysis,
+                                     const ExtractionOptions& options)
+{
+    ExtractionResult result;
+    result.spacing = cloud.spacing;
+    const Eigen::Index n = cloud.points.rows();
+    addSharpLines(analysis.sharp, result);
+    DistinctPointResults points(n);
+    int patches = 0;
+    for (size_t r = 0; r < analysis.geometry.size(); ++r) {
+        const RegionGeometry& g = analysis.geometry[r];
+        report(options.progress, 0.8 + 0.2 * static_cast<double>(r) / analysis.geometry.size(),
+               "smooth edges of region " + std::to_string(r + 1));
+        RegionReport rr = regionReport(g, options);
+        const RegionEdges edges =
+            smoothEdgesAndPatches(g, rr.thresholds, analysis.sharp, options, patches);
+        patches = edges.nextPatch;
+        setRegionPoints(g, edges.patchOf, addSmoothLines(g, rr, edges, result), points);
+        result.regions.push_back(std::move(rr));
+    }
+    if (!options.smoothEdges) {
+        for (Eigen::Index p = 0; p < n; ++p) {
+            points.region[p] = analysis.regions.region[p];
+        }
+    }
+    copyToInputPoints(cloud, points, result);
     report(options.progress, 1.0, "done");
     return result;
 }

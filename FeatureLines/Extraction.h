@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The whole method (Sec. 1.2 of the 2008 paper): from a raw cloud to a network of closed,
-// typed feature lines. Sharp edges and the boundary on the raw cloud; the cloud divided into
-// smooth regions; in each region its own smoothing, curvature histogram, thresholds and
-// smooth-edge lines, one closed set per threshold.
+// typed feature lines, in three steps a caller may keep and recompute from.
+// Design: docs/design/pipeline.md.
 #pragma once
 
 #include <cstdint>
@@ -62,18 +61,26 @@ enum class ThresholdMode
 
 struct ExtractionOptions
 {
+    /// The k nearest neighbours of the cloud (Sec. 2.1).
     NeighbourOptions neighbours;
+    /// Sharp edges are extracted (default true).
     bool sharpEdges = true;
     /// Sharp edges, and the boundary of an open cloud (sharp.includeBoundary).
     SharpEdgeOptions sharp;
+    /// Smooth edges are extracted (default true).
     bool smoothEdges = true;
+    /// The division of the cloud into smooth regions.
     SmoothRegionOptions regions;
+    /// Each region's smoothing, curvature, thresholds and smooth edges.
     SmoothEdgeOptions smooth;
+    /// How each region's thresholds are chosen (default Automatic).
     ThresholdMode thresholdMode = ThresholdMode::Automatic;
+    /// Explicit mode: the curvature thresholds (1/length) of every region not listed below.
     std::vector<double> thresholds;
+    /// Explicit mode: the curvature thresholds of the listed regions, by region number.
     std::map<int, std::vector<double>> regionThresholds;
     /// Called between stages with the share of the work done (0..1) and the stage's name;
-    /// returning false cancels the extraction (ExtractionCancelled is thrown).
+    /// returning false cancels the extraction (ExtractionCancelled is thrown). Default none.
     std::function<bool(double, const std::string&)> progress;
 };
 
@@ -87,8 +94,8 @@ struct ExtractionCancelled : std::runtime_error
 struct CloudGeometry
 {
     /// The distinct points (exact duplicates merged) in a canonical spatial order (Morton order
-    /// of their positions: neighbours lie in nearby rows, and the order, so every result, does
-    /// not depend on the input's order) and, per input point, its row here.
+    /// of their positions: no result depends on the input's order) and, per input point, its
+    /// row here.
     PointMatrix points;
     std::vector<int> inputToPoint;
     Neighbourhoods neighbours;

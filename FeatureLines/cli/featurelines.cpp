@@ -190,6 +190,31 @@ int runCurvature(const Arguments& a)
 
 // ---- threshold ----------------------------------------------------------------------------
 
+/// The L + 1 edges of the histogram's bins.
+std::vector<double> binEdges(const Histogram& h)
+{
+    std::vector<double> edges(h.counts.size() + 1);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        edges[i] = h.minimum + static_cast<double>(i) * h.binWidth;
+    }
+    if (h.binWidth > 0.0) {
+        edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
+    }
+    return edges;
+}
+
+/// The histogram as a JSON object: its range, bin width and counts.
+std::string histogramJson(const Histogram& h)
+{
+    using namespace json;
+    Object histogram;
+    histogram.add("minimum", number(h.minimum))
+        .add("maximum", number(h.maximum))
+        .add("bin_width", number(h.binWidth))
+        .add("counts", array(h.counts));
+    return histogram.str();
+}
+
 int runThreshold(const Arguments& a)
 {
     const std::string input = inputPath(a);
@@ -227,20 +252,7 @@ int runThreshold(const Arguments& a)
                   << "high points: " << high << "\n";
         return 0;
     }
-    const Histogram& h = r.histogram;
-    std::vector<double> edges(h.counts.size() + 1);
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-        edges[i] = h.minimum + static_cast<double>(i) * h.binWidth;
-    }
-    if (h.binWidth > 0.0) {
-        edges.back() = h.maximum; // the last edge is the maximum itself, not a rounded sum
-    }
     using namespace json;
-    Object histogram;
-    histogram.add("minimum", number(h.minimum))
-        .add("maximum", number(h.maximum))
-        .add("bin_width", number(h.binWidth))
-        .add("counts", array(h.counts));
     Object result;
     result.add("points", number(static_cast<long>(values.size())))
         .add("threshold", number(r.threshold))
@@ -255,8 +267,8 @@ int runThreshold(const Arguments& a)
         .add("search",
              string(options.search == ThresholdSearch::SingleRun ? "single-run" : "all-starts"))
         .add("range", string(below ? "below" : (above ? "above" : "all")))
-        .add("histogram", histogram.str())
-        .add("bin_edges", array(edges));
+        .add("histogram", histogramJson(r.histogram))
+        .add("bin_edges", array(binEdges(r.histogram)));
     std::cout << result.str() << "\n";
     return 0;
 }
@@ -345,17 +357,9 @@ std::string pointsJson(const PointMatrix& P)
     return out + "]";
 }
 
-int runExtract(const Arguments& a)
+/// The lines of the result as a JSON array, one line per row.
+std::string linesJson(const ExtractionResult& r)
 {
-    const std::string input = inputPath(a);
-    if (!a.has("--output")) {
-        throw UsageError("no output file given (-o LINES.json)");
-    }
-    const std::string output = a.text("--output");
-    const ExtractionOptions options = extractionOptions(a);
-    const PointMatrix cloud = readCloud(input);
-    const ExtractionResult r = extractFeatureLines(cloud, options);
-
     using namespace json;
     std::string lines = "[";
     for (std::size_t i = 0; i < r.lines.size(); ++i) {
@@ -372,7 +376,31 @@ int runExtract(const Arguments& a)
         line.add("points", pointsJson(l.points));
         lines += (i ? ",\n  " : "\n  ") + line.str();
     }
-    lines += "\n]";
+    return lines + "\n]";
+}
+
+/// Every scale a region's curvature weighed, as a JSON array.
+std::string scaleTrialsJson(const std::vector<RegionGeometry::ScaleTrial>& scaleTrials)
+{
+    using namespace json;
+    std::string trials = "[";
+    for (std::size_t t = 0; t < scaleTrials.size(); ++t) {
+        const RegionGeometry::ScaleTrial& st = scaleTrials[t];
+        Object trial;
+        trial.add("scale", number(st.scale))
+            .add("points", number(static_cast<long>(st.points)))
+            .add("noise", number(st.noise))
+            .add("accepted_thresholds", number(static_cast<long>(st.acceptedThresholds)))
+            .add("separation", number(st.separation));
+        trials += (t ? ", " : "") + trial.str();
+    }
+    return trials + "]";
+}
+
+/// The region reports of the result as a JSON array.
+std::string regionsJson(const ExtractionResult& r)
+{
+    using namespace json;
     std::string regions = "[";
     for (std::size_t i = 0; i < r.regions.size(); ++i) {
         const RegionReport& rr = r.regions[i];
@@ -383,50 +411,52 @@ int runExtract(const Arguments& a)
             .add("smoothed", rr.smoothed ? "true" : "false")
             .add("curvature_scale", number(rr.curvatureScale));
         if (!rr.scaleTrials.empty()) {
-            std::string trials = "[";
-            for (std::size_t t = 0; t < rr.scaleTrials.size(); ++t) {
-                const RegionGeometry::ScaleTrial& st = rr.scaleTrials[t];
-                Object trial;
-                trial.add("scale", number(st.scale))
-                    .add("points", number(static_cast<long>(st.points)))
-                    .add("noise", number(st.noise))
-                    .add("accepted_thresholds", number(static_cast<long>(st.acceptedThresholds)))
-                    .add("separation", number(st.separation));
-                trials += (t ? ", " : "") + trial.str();
-            }
-            region.add("scale_trials", trials + "]");
+            region.add("scale_trials", scaleTrialsJson(rr.scaleTrials));
         }
         region.add("thresholds", array(rr.thresholds));
         regions += (i ? ", " : "") + region.str();
     }
-    regions += "]";
+    return regions + "]";
+}
+
+/// The lines file (--output): the input, its point count and the result.
+void writeLinesFile(const std::string& output, const std::string& input, Eigen::Index points,
+                    const ExtractionResult& r)
+{
+    using namespace json;
     Object result;
     result.add("input", string(input))
-        .add("points", number(static_cast<long>(cloud.rows())))
+        .add("points", number(static_cast<long>(points)))
         .add("spacing", number(r.spacing))
-        .add("lines", lines)
+        .add("lines", linesJson(r))
         .add("junctions", pointsJson(r.junctions))
-        .add("regions", regions);
+        .add("regions", regionsJson(r));
     std::ofstream out(output);
     out << result.str() << "\n";
     if (!out) {
         throw std::invalid_argument(output + ": writing the file failed");
     }
+}
 
-    if (a.has("--labels")) {
-        const std::string file = a.text("--labels");
-        std::ofstream labels(file);
-        labels << "# region patch label curvature (label: 0 low, 1 inner, 2 border, 3 noisy, "
-                  "255 outside every region)\n"
-               << std::setprecision(9);
-        for (std::size_t i = 0; i < r.region.size(); ++i) {
-            labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i]) << ' '
-                   << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
-        }
-        if (!labels) {
-            throw std::invalid_argument(file + ": writing the file failed");
-        }
+/// The labels file (--labels): per input point its region, patch, label and curvature.
+void writeLabelsFile(const std::string& file, const ExtractionResult& r)
+{
+    std::ofstream labels(file);
+    labels << "# region patch label curvature (label: 0 low, 1 inner, 2 border, 3 noisy, "
+              "255 outside every region)\n"
+           << std::setprecision(9);
+    for (std::size_t i = 0; i < r.region.size(); ++i) {
+        labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i]) << ' '
+               << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
     }
+    if (!labels) {
+        throw std::invalid_argument(file + ": writing the file failed");
+    }
+}
+
+/// The one-line summary on stdout, and a note when there is no line.
+void printLineSummary(const ExtractionResult& r)
+{
     int closed = 0;
     for (const FeatureLine& l : r.lines) {
         closed += l.closed ? 1 : 0;
@@ -439,6 +469,23 @@ int runExtract(const Arguments& a)
         std::cout
             << "no feature lines: the cloud has no sharp edge, boundary or curvature valley\n";
     }
+}
+
+int runExtract(const Arguments& a)
+{
+    const std::string input = inputPath(a);
+    if (!a.has("--output")) {
+        throw UsageError("no output file given (-o LINES.json)");
+    }
+    const std::string output = a.text("--output");
+    const ExtractionOptions options = extractionOptions(a);
+    const PointMatrix cloud = readCloud(input);
+    const ExtractionResult r = extractFeatureLines(cloud, options);
+    writeLinesFile(output, input, cloud.rows(), r);
+    if (a.has("--labels")) {
+        writeLabelsFile(a.text("--labels"), r);
+    }
+    printLineSummary(r);
     return 0;
 }
 

@@ -45,10 +45,8 @@ std::string quoted(std::string_view token)
     return "'" + std::string(token.substr(0, 20)) + (token.size() > 20 ? "...'" : "'");
 }
 
-/// The text formats: one point per line, the first three numbers of a line are x y z.
-/// std::from_chars is exact, fast and does not follow the process locale (FreeCAD's GUI
-/// may run under one whose decimal separator is a comma).
-PointMatrix readText(const std::string& path)
+/// The bytes of the file at `path`.
+std::string fileText(const std::string& path)
 {
     std::ifstream file(path, std::ios::binary);
     if (!file) {
@@ -61,7 +59,50 @@ PointMatrix readText(const std::string& path)
     if (!file) {
         throw std::invalid_argument(path + ": reading the file failed");
     }
+    return text;
+}
 
+/// Appends to xyz the number that starts at p, after any separators, on the line ending at
+/// lineEnd: coordinate `coordinate` of its point. Returns the end of the number's token.
+/// Messages start with `where`.
+const char* readCoordinate(const char* p, const char* lineEnd, int coordinate,
+                           const std::string& where, std::vector<double>& xyz)
+{
+    while (p < lineEnd && isSeparator(*p)) {
+        ++p;
+    }
+    if (p == lineEnd) {
+        throw std::invalid_argument(where + "only " + std::to_string(coordinate) +
+                                    " number(s), a point needs x y z");
+    }
+    const char* tokenEnd = std::find_if(p, lineEnd, isSeparator);
+    const std::string_view token(p, tokenEnd - p);
+    const char* start = p;
+    if (*start == '+' && start + 1 < tokenEnd) { // from_chars takes no '+'
+        ++start;
+    }
+    double value = 0.0;
+    const auto [parsedEnd, error] = std::from_chars(start, tokenEnd, value);
+    if (error == std::errc::result_out_of_range) {
+        throw std::invalid_argument(where + quoted(token) + " is out of range");
+    }
+    if (error != std::errc() || parsedEnd != tokenEnd) {
+        throw std::invalid_argument(where + quoted(token) + " is not a number");
+    }
+    if (!std::isfinite(value)) {
+        throw std::invalid_argument(where + "coordinate " + quoted(token) +
+                                    " is not a finite number");
+    }
+    xyz.push_back(value);
+    return tokenEnd;
+}
+
+/// The text formats: one point per line, the first three numbers of a line are x y z.
+/// std::from_chars is exact, fast and does not follow the process locale (FreeCAD's GUI
+/// may run under one whose decimal separator is a comma).
+PointMatrix readText(const std::string& path)
+{
+    const std::string text = fileText(path);
     std::vector<double> xyz;
     xyz.reserve(text.size() / 16);
     adviseHugePages(xyz.data(), xyz.capacity() * sizeof(double));
@@ -90,33 +131,7 @@ PointMatrix readText(const std::string& path)
         }
         const std::string where = path + ", line " + std::to_string(lineNumber) + ": ";
         for (int coordinate = 0; coordinate < 3; ++coordinate) {
-            while (p < lineEnd && isSeparator(*p)) {
-                ++p;
-            }
-            if (p == lineEnd) {
-                throw std::invalid_argument(where + "only " + std::to_string(coordinate) +
-                                            " number(s), a point needs x y z");
-            }
-            const char* tokenEnd = std::find_if(p, lineEnd, isSeparator);
-            const std::string_view token(p, tokenEnd - p);
-            const char* start = p;
-            if (*start == '+' && start + 1 < tokenEnd) { // from_chars takes no '+'
-                ++start;
-            }
-            double value = 0.0;
-            const auto [parsedEnd, error] = std::from_chars(start, tokenEnd, value);
-            if (error == std::errc::result_out_of_range) {
-                throw std::invalid_argument(where + quoted(token) + " is out of range");
-            }
-            if (error != std::errc() || parsedEnd != tokenEnd) {
-                throw std::invalid_argument(where + quoted(token) + " is not a number");
-            }
-            if (!std::isfinite(value)) {
-                throw std::invalid_argument(where + "coordinate " + quoted(token) +
-                                            " is not a finite number");
-            }
-            xyz.push_back(value);
-            p = tokenEnd;
+            p = readCoordinate(p, lineEnd, coordinate, where, xyz);
         }
         // Further columns (normals, colours, intensities) are ignored.
     }

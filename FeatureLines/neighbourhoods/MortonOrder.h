@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Morton (Z-order) keys of points and their sort. Sorted by key, points that are close in space
-// are close in the array, and the points of any cube of the key's octree (a key prefix) are one
-// run of it: the canonical order of the cloud (analyseCloud) and the cells of the neighbour
-// search (nearestNeighbours).
+// Morton (Z-order) keys of points and their sort: the canonical order of the cloud
+// (analyseCloud) and the cells of the neighbour search (nearestNeighbours).
+// Design: docs/design/neighbourhoods.md.
 #pragma once
 
 #include <cstdint>
@@ -54,10 +53,8 @@ struct MortonGrid
     }
 };
 
-/// Sorts by key, stably (pairs of equal keys keep their order): a radix sort, 11 bits of the
-/// key a pass (a few sweeps over the array cost a third of a comparison sort of a million
-/// pairs), passes in which every key has the same digit skipped; the threads count and move
-/// one run of the array each.
+/// Sorts by key, stably (pairs of equal keys keep their order): a parallel radix sort, 11 bits
+/// of the key a pass.
 void sortByMortonKey(std::vector<std::pair<std::uint64_t, int>>& keyed);
 
 } // namespace featurelines

@@ -151,19 +151,10 @@ constexpr double pointsPerCellPerNeighbour = 0.75;
 /// falls short for about one query in a thousand, which then searches again farther.
 constexpr double radiusGuess = 1.1;
 
-} // namespace
-
-void Neighbourhoods::allocate(Eigen::Index rows, int k)
+/// Throws std::invalid_argument unless P has more than k finite points, k >= 3 and the rows
+/// fit the index type.
+void checkNeighbourInput(const PointMatrix& P, int k)
 {
-    indices.resize(rows, k);
-    squaredDistances.resize(rows, k);
-    adviseHugePagesOf(indices);
-    adviseHugePagesOf(squaredDistances);
-}
-
-Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options)
-{
-    const int k = options.k;
     if (k < 3) {
         throw std::invalid_argument("neighbours: at least 3 neighbours per point are needed, " +
                                     std::to_string(k) + " were asked for");
@@ -178,60 +169,74 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
                                     "holds");
     }
     checkFinite(P, "point cloud");
+}
 
-    const Eigen::Index n = P.rows();
-    const int threads = threadCount(options.threads);
-    Neighbourhoods result;
-    result.allocate(n, k);
-    const MortonGrid grid(P);
-    if (!(grid.scale > 0.0)) {
-        // Every point coincides: the neighbours of each are the others of lowest index.
-        for (Eigen::Index i = 0; i < n; ++i) {
-            for (int c = 0, j = 0; c < k; ++j) {
-                if (j != i) {
-                    result.indices(i, c) = j;
-                    result.squaredDistances(i, c) = 0.0;
-                    ++c;
-                }
+/// Every point coincides: the neighbours of each are the others of lowest index.
+void coincidentNeighbours(Neighbourhoods& result, Eigen::Index n, int k)
+{
+    for (Eigen::Index i = 0; i < n; ++i) {
+        for (int c = 0, j = 0; c < k; ++j) {
+            if (j != i) {
+                result.indices(i, c) = j;
+                result.squaredDistances(i, c) = 0.0;
+                ++c;
             }
         }
-        return result;
     }
+}
 
-    // The points in key order: the cloud itself when it comes in that order (analyseCloud's
-    // canonical order), else a copy. original[j] is the row of P of row j of Q.
-    std::vector<std::uint64_t> keys(static_cast<std::size_t>(n));
+/// The points in key order: the cloud itself when it comes in that order (analyseCloud's
+/// canonical order), else a copy. original[j] is the row of P of row j of the copy.
+struct KeyOrder
+{
+    std::vector<std::uint64_t> keys;
+    bool sorted = true;
+    std::vector<int> original;
+    PointMatrix copy;
+
+    const PointMatrix& points(const PointMatrix& P) const { return sorted ? P : copy; }
+    int rowOf(Eigen::Index j) const
+    {
+        return sorted ? static_cast<int>(j) : original[static_cast<std::size_t>(j)];
+    }
+};
+
+KeyOrder keyOrder(const PointMatrix& P, const MortonGrid& grid, int threads)
+{
+    const Eigen::Index n = P.rows();
+    KeyOrder order;
+    std::vector<std::uint64_t>& keys = order.keys;
+    keys.resize(static_cast<std::size_t>(n));
 #pragma omp parallel for schedule(static, 4096) num_threads(threads)
     for (Eigen::Index i = 0; i < n; ++i) {
         keys[static_cast<std::size_t>(i)] = grid.key(P, i);
     }
-    const bool sorted = std::is_sorted(keys.begin(), keys.end());
-    std::vector<int> original;
-    PointMatrix copy;
-    if (!sorted) {
-        std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<std::size_t>(n));
-        for (Eigen::Index i = 0; i < n; ++i) {
-            keyed[static_cast<std::size_t>(i)] = {keys[static_cast<std::size_t>(i)],
-                                                  static_cast<int>(i)};
-        }
-        sortByMortonKey(keyed);
-        original.resize(static_cast<std::size_t>(n));
-        copy.resize(n, 3);
-#pragma omp parallel for schedule(static, 4096) num_threads(threads)
-        for (Eigen::Index j = 0; j < n; ++j) {
-            keys[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].first;
-            original[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].second;
-            copy.row(j) = P.row(keyed[static_cast<std::size_t>(j)].second);
-        }
+    order.sorted = std::is_sorted(keys.begin(), keys.end());
+    if (order.sorted) {
+        return order;
     }
-    const PointMatrix& Q = sorted ? P : copy;
-    const auto rowOf = [&](Eigen::Index j) {
-        return sorted ? static_cast<int>(j) : original[static_cast<std::size_t>(j)];
-    };
+    std::vector<std::pair<std::uint64_t, int>> keyed(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        keyed[static_cast<std::size_t>(i)] = {keys[static_cast<std::size_t>(i)],
+                                              static_cast<int>(i)};
+    }
+    sortByMortonKey(keyed);
+    order.original.resize(static_cast<std::size_t>(n));
+    order.copy.resize(n, 3);
+#pragma omp parallel for schedule(static, 4096) num_threads(threads)
+    for (Eigen::Index j = 0; j < n; ++j) {
+        keys[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].first;
+        order.original[static_cast<std::size_t>(j)] = keyed[static_cast<std::size_t>(j)].second;
+        order.copy.row(j) = P.row(keyed[static_cast<std::size_t>(j)].second);
+    }
+    return order;
+}
 
-    releaseIdleThreads(); // the level and the cells' hash table are serial
-    // The level: the finest whose cells hold the wanted mean number of points. Consecutive
-    // keys first differ at bit b: a new cell starts there on every level up to b / 3.
+/// The level the search runs on: the finest whose cells hold the wanted mean number of points
+/// (pointsPerCellPerNeighbour). Consecutive keys first differ at bit b: a new cell starts there
+/// on every level up to b / 3.
+int searchLevel(const std::vector<std::uint64_t>& keys, Eigen::Index n, int k)
+{
     std::vector<long> newCells(mortonBitsPerAxis + 1, 0);
     for (std::size_t j = 1; j < keys.size(); ++j) {
         const std::uint64_t differ = keys[j] ^ keys[j - 1];
@@ -246,213 +251,368 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
          ++level) {
         cells -= newCells[static_cast<std::size_t>(level)];
     }
-    const Cells cells(keys, level);
-    // Each cell is cut into 8 sub-cells (one level finer), the unit of the scan: a query looks
-    // at the sub-cells its search box overlaps among the 6 x 6 x 6 of the 27 cells around its
-    // own.
-    constexpr int width = 6;
-    const int subLevel = level - 1;
-    const double subSteps = double(std::uint64_t(1) << subLevel);
-    const std::int64_t lastCell = (std::int64_t(1) << (mortonBitsPerAxis - level)) - 1;
-    const std::int64_t lastSub = (std::int64_t(1) << (mortonBitsPerAxis - subLevel)) - 1;
-    // Margins for rounding in steps: positions are exact to about 1e-9 step.
-    constexpr double stepMargin = 1e-3;
-    const double oneStep = 1.0 / grid.scale;
+    return level;
+}
 
-    // Exact for any query, at any level from `level` up: the points of the 27 cells around the
-    // query's cell, when the k-th nearest among them is closer than the block's faces;
-    // otherwise the next level. The top level's block is the whole cloud.
-    const auto searchWide = [&](Eigen::Index j, Candidates& c, std::vector<double>& scratch) {
-        double u[3];
-        std::int64_t q[3];
-        for (int d = 0; d < 3; ++d) {
-            u[d] = grid.steps(Q(j, d), d);
-            q[d] = static_cast<std::int64_t>(u[d]);
-        }
-        for (int l = level;; ++l) {
-            const std::int64_t top = (std::int64_t(1) << (mortonBitsPerAxis - l)) - 1;
-            std::int64_t cc[3];
-            for (int d = 0; d < 3; ++d) {
-                cc[d] = q[d] >> l;
-            }
-            std::size_t count = 0;
-            for (int dz = -1; dz <= 1; ++dz) {
-                for (int dy = -1; dy <= 1; ++dy) {
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
-                        if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
-                            continue;
-                        }
-                        const std::uint64_t code =
-                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z));
-                        const auto from =
-                            std::lower_bound(keys.begin(), keys.end(), code << (3 * l));
-                        const auto to = std::lower_bound(from, keys.end(), (code + 1) << (3 * l));
-                        for (auto at = from; at != to; ++at) {
-                            const Eigen::Index r = at - keys.begin();
-                            if (r == j) {
-                                continue;
-                            }
-                            c.reserve(count + 1);
-                            c.distance[count] = (Q.row(r) - Q.row(j)).squaredNorm();
-                            c.index[count] = rowOf(r);
-                            ++count;
-                        }
-                    }
+/// Each cell is cut into 8 sub-cells (one level finer), the unit of the scan: a query looks at
+/// the sub-cells its search box overlaps among the 6 x 6 x 6 of the 27 cells around its own.
+constexpr int width = 6;
+
+/// Margins for rounding in steps: positions are exact to about 1e-9 step.
+constexpr double stepMargin = 1e-3;
+
+/// Calls visit(dx, dy, dz, code) for each of the 27 cells cc + (dx, dy, dz) inside the grid
+/// [0, top]^3 (code: the cell's Morton key), dz slowest, dx fastest.
+template <class Visit>
+void forEachCellAround(const std::int64_t cc[3], std::int64_t top, const Visit& visit)
+{
+    for (int dz = -1; dz <= 1; ++dz) {
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
+                if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
+                    continue;
                 }
+                visit(dx, dy, dz, mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
             }
-            if (count < static_cast<std::size_t>(k)) {
-                continue;
-            }
-            scratch.assign(c.distance.begin(), c.distance.begin() + count);
-            std::nth_element(scratch.begin(), scratch.begin() + (k - 1), scratch.end());
-            const double kth = scratch[static_cast<std::size_t>(k - 1)];
-            // Every point within the k-th distance lies in the block.
-            const double reach = std::sqrt(kth) * grid.scale * (1.0 + 1e-9) + stepMargin;
-            bool inside = true;
-            for (int d = 0; d < 3; ++d) {
-                inside = inside &&
-                         (cc[d] == 0 || std::floor(u[d] - reach) >= double((cc[d] - 1) << l)) &&
-                         (cc[d] == top || std::floor(u[d] + reach) < double((cc[d] + 2) << l));
-            }
-            if (!inside) {
-                continue;
-            }
-            std::size_t kept = 0;
-            for (std::size_t a = 0; a < count; ++a) {
-                c.distance[kept] = c.distance[a];
-                c.index[kept] = c.index[a];
-                kept += c.distance[a] <= kth;
-            }
-            storeNearest(c, kept, k, &result.indices(rowOf(j), 0),
-                         &result.squaredDistances(rowOf(j), 0));
-            return kth;
         }
-    };
+    }
+}
 
+/// A run of rows of the key order: the points of one sub-cell.
+struct Run
+{
+    int first = 0, end = 0;
+};
+
+/// What one thread keeps from query to query: the sub-cells' runs of the block around the
+/// current cell, the candidates, and the radius of the next first search.
+struct Worker
+{
+    std::vector<Run> table = std::vector<Run>(width * width * width);
+    Candidates candidates;
+    std::vector<double> scratch;
+    double guess = 0.0;
+};
+
+/// What the search runs on: the points Q in key order (order.points(P)), their grid, order
+/// and cells at `level`, and the neighbours wanted per point.
+struct CellSearchInput
+{
+    const MortonGrid& grid;
+    const PointMatrix& Q;
+    const KeyOrder& order;
+    const Cells& cells;
+    int level;
+    int k;
+};
+
+/// The exact search over the cells of one level of the key order, writing into `result`.
+class CellSearch
+{
+public:
+    CellSearch(const CellSearchInput& in, Neighbourhoods& result)
+        : grid_(in.grid), Q_(in.Q), order_(in.order), keys_(in.order.keys), cells_(in.cells),
+          level_(in.level), k_(in.k), result_(result), subLevel_(in.level - 1),
+          subSteps_(double(std::uint64_t(1) << subLevel_)),
+          lastCell_((std::int64_t(1) << (mortonBitsPerAxis - in.level)) - 1),
+          lastSub_((std::int64_t(1) << (mortonBitsPerAxis - subLevel_)) - 1),
+          oneStep_(1.0 / in.grid.scale)
+    {
+    }
+
+    /// Every point's neighbours, the cells shared among the threads.
+    void run(int threads) const;
+
+private:
+    /// The queries of one cell: each first within a box about it in the sub-cells of the 27
+    /// cells around, else searchWide.
+    void searchCell(long cell, Worker& w) const;
+
+    /// Fills `table` with the runs of rows of the sub-cells of the 27 cells around cell cc;
+    /// returns the number of points they hold.
+    std::size_t gatherBlock(const std::int64_t cc[3], std::vector<Run>& table) const;
+
+    /// The runs of the sub-cells of cell `other`, at offset (dx, dy, dz) of the block's centre.
+    void addSubCells(int other, int dx, int dy, int dz, std::vector<Run>& table) const;
+
+    /// The k nearest lie within R of the query when at least k points do: every point within R
+    /// is in the sub-cells the box [q - R, q + R] overlaps. R starts from the guess and grows
+    /// while fewer than k are found and the box stays in the table. False when it left the
+    /// table first.
+    bool searchNear(int j, const std::int64_t origin[3], Worker& w) const;
+
+    /// The sub-cells [lo, hi] of the table that the box of half-width R about u (in steps)
+    /// overlaps; false when it reaches outside the table.
+    bool boxInTable(const double u[3], double R, const std::int64_t origin[3], int lo[3],
+                    int hi[3]) const;
+
+    /// The other points within R of query j in the sub-cells [lo, hi], as candidates (rows of
+    /// the key order); returns their count.
+    std::size_t pointsWithin(int j, double R, const int lo[3], const int hi[3], Worker& w) const;
+
+    /// Exact for any query, at any level from the search's up: the points of the 27 cells
+    /// around the query's cell, when the k-th nearest among them is closer than the block's
+    /// faces; otherwise the next level. The top level's block is the whole cloud. Returns the
+    /// k-th squared distance.
+    double searchWide(Eigen::Index j, Candidates& c, std::vector<double>& scratch) const;
+
+    /// The other points of the 27 cells of level l around cell cc as candidates (rows of P);
+    /// returns their count.
+    std::size_t gatherWide(Eigen::Index j, const std::int64_t cc[3], int l, std::int64_t top,
+                           Candidates& c) const;
+
+    /// True when every point within the k-th distance of the query at u (in steps) lies in the
+    /// block of the 27 cells of level l around cell cc.
+    bool blockHolds(const double u[3], const std::int64_t cc[3], int l, std::int64_t top,
+                    double kth) const;
+
+    const MortonGrid& grid_;
+    const PointMatrix& Q_;
+    const KeyOrder& order_;
+    const std::vector<std::uint64_t>& keys_;
+    const Cells& cells_;
+    const int level_;
+    const int k_;
+    Neighbourhoods& result_;
+    const int subLevel_;
+    const double subSteps_;
+    const std::int64_t lastCell_;
+    const std::int64_t lastSub_;
+    const double oneStep_;
+};
+
+void CellSearch::run(int threads) const
+{
 #pragma omp parallel num_threads(threads)
     {
-        struct Run
-        {
-            int first = 0, end = 0;
-        };
-        std::vector<Run> table(width * width * width);
-        Candidates candidates;
-        std::vector<double> scratch;
-        double guess = 0.0;
+        Worker worker;
 #pragma omp for schedule(dynamic, 16)
-        for (long cell = 0; cell < cells.count(); ++cell) {
-            // The runs of rows of the sub-cells of the 27 cells around this one.
-            std::int64_t cc[3];
-            for (int d = 0; d < 3; ++d) {
-                cc[d] = static_cast<std::int64_t>(grid.steps(Q(cells.first(cell), d), d)) >> level;
-            }
-            std::fill(table.begin(), table.end(), Run{});
-            std::size_t blockPoints = 0;
-            for (int dz = -1; dz <= 1; ++dz) {
-                for (int dy = -1; dy <= 1; ++dy) {
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const std::int64_t x = cc[0] + dx, y = cc[1] + dy, z = cc[2] + dz;
-                        if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell ||
-                            z > lastCell) {
-                            continue;
-                        }
-                        const int other = cells.find(
-                            mortonKey(std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
-                        if (other < 0) {
-                            continue;
-                        }
-                        const int end = cells.end(other);
-                        blockPoints += static_cast<std::size_t>(end - cells.first(other));
-                        for (int first = cells.first(other); first < end;) {
-                            // The sub-cell: the key's three bits below the cell's.
-                            const unsigned sub = unsigned(keys[first] >> (3 * subLevel)) & 7u;
-                            int last = first + 1;
-                            while (last < end &&
-                                   (unsigned(keys[last] >> (3 * subLevel)) & 7u) == sub) {
-                                ++last;
-                            }
-                            const int X = 2 * (dx + 1) + int(sub & 1u);
-                            const int Y = 2 * (dy + 1) + int((sub >> 1) & 1u);
-                            const int Z = 2 * (dz + 1) + int(sub >> 2);
-                            table[static_cast<std::size_t>((Z * width + Y) * width + X)] = {first,
-                                                                                            last};
-                            first = last;
-                        }
-                    }
+        for (long cell = 0; cell < cells_.count(); ++cell) {
+            searchCell(cell, worker);
+        }
+    }
+}
+
+void CellSearch::searchCell(long cell, Worker& w) const
+{
+    std::int64_t cc[3];
+    for (int d = 0; d < 3; ++d) {
+        cc[d] = static_cast<std::int64_t>(grid_.steps(Q_(cells_.first(cell), d), d)) >> level_;
+    }
+    const std::size_t blockPoints = gatherBlock(cc, w.table);
+    w.candidates.reserve(blockPoints);
+    const std::int64_t origin[3] = {2 * (cc[0] - 1), 2 * (cc[1] - 1), 2 * (cc[2] - 1)};
+    if (!(w.guess > 0.0)) {
+        w.guess = 0.5 * subSteps_ * oneStep_;
+    }
+    for (int j = cells_.first(cell); j < cells_.end(cell); ++j) {
+        if (!searchNear(j, origin, w)) {
+            w.guess = radiusGuess * std::sqrt(searchWide(j, w.candidates, w.scratch));
+        }
+    }
+}
+
+std::size_t CellSearch::gatherBlock(const std::int64_t cc[3], std::vector<Run>& table) const
+{
+    std::fill(table.begin(), table.end(), Run{});
+    std::size_t blockPoints = 0;
+    forEachCellAround(cc, lastCell_, [&](int dx, int dy, int dz, std::uint64_t code) {
+        const int other = cells_.find(code);
+        if (other < 0) {
+            return;
+        }
+        blockPoints += static_cast<std::size_t>(cells_.end(other) - cells_.first(other));
+        addSubCells(other, dx, dy, dz, table);
+    });
+    return blockPoints;
+}
+
+void CellSearch::addSubCells(int other, int dx, int dy, int dz, std::vector<Run>& table) const
+{
+    const int end = cells_.end(other);
+    for (int first = cells_.first(other); first < end;) {
+        // The sub-cell: the key's three bits below the cell's.
+        const unsigned sub = unsigned(keys_[first] >> (3 * subLevel_)) & 7u;
+        int last = first + 1;
+        while (last < end && (unsigned(keys_[last] >> (3 * subLevel_)) & 7u) == sub) {
+            ++last;
+        }
+        const int X = 2 * (dx + 1) + int(sub & 1u);
+        const int Y = 2 * (dy + 1) + int((sub >> 1) & 1u);
+        const int Z = 2 * (dz + 1) + int(sub >> 2);
+        table[static_cast<std::size_t>((Z * width + Y) * width + X)] = {first, last};
+        first = last;
+    }
+}
+
+bool CellSearch::searchNear(int j, const std::int64_t origin[3], Worker& w) const
+{
+    double u[3];
+    for (int d = 0; d < 3; ++d) {
+        u[d] = grid_.steps(Q_(j, d), d);
+    }
+    for (double R = std::max(w.guess, oneStep_);;) {
+        int lo[3], hi[3];
+        if (!boxInTable(u, R, origin, lo, hi)) {
+            return false;
+        }
+        const std::size_t count = pointsWithin(j, R, lo, hi, w);
+        if (count >= static_cast<std::size_t>(k_)) {
+            if (!order_.sorted) {
+                for (std::size_t a = 0; a < count; ++a) {
+                    w.candidates.index[a] =
+                        order_.original[static_cast<std::size_t>(w.candidates.index[a])];
                 }
             }
-            candidates.reserve(blockPoints);
-            const std::int64_t origin[3] = {2 * (cc[0] - 1), 2 * (cc[1] - 1), 2 * (cc[2] - 1)};
-            if (!(guess > 0.0)) {
-                guess = 0.5 * subSteps * oneStep;
-            }
-            for (int j = cells.first(cell); j < cells.end(cell); ++j) {
-                double u[3];
-                for (int d = 0; d < 3; ++d) {
-                    u[d] = grid.steps(Q(j, d), d);
-                }
-                // The k nearest lie within R of the query when at least k points do: every point
-                // within R is in the sub-cells the box [q - R, q + R] overlaps. R starts from the
-                // guess and grows while fewer than k are found and the box stays in the table.
-                bool found = false;
-                for (double R = std::max(guess, oneStep);;) {
-                    const double reach = R * grid.scale * (1.0 + 1e-9) + stepMargin;
-                    int lo[3], hi[3];
-                    bool inside = true;
-                    for (int d = 0; d < 3; ++d) {
-                        // Sub-cells outside the grid hold no point.
-                        const std::int64_t a = std::max<std::int64_t>(
-                            0, static_cast<std::int64_t>(std::floor((u[d] - reach) / subSteps)));
-                        const std::int64_t b = std::min<std::int64_t>(
-                            lastSub,
-                            static_cast<std::int64_t>(std::floor((u[d] + reach) / subSteps)));
-                        lo[d] = static_cast<int>(a - origin[d]);
-                        hi[d] = static_cast<int>(b - origin[d]);
-                        inside = inside && lo[d] >= 0 && hi[d] < width;
-                    }
-                    if (!inside) {
-                        break;
-                    }
-                    const double R2 = R * R;
-                    std::size_t count = 0;
-                    for (int Z = lo[2]; Z <= hi[2]; ++Z) {
-                        for (int Y = lo[1]; Y <= hi[1]; ++Y) {
-                            for (int X = lo[0]; X <= hi[0]; ++X) {
-                                const Run run =
-                                    table[static_cast<std::size_t>((Z * width + Y) * width + X)];
-                                for (int r = run.first; r < run.end; ++r) { // branch-free
-                                    const double d2 = (Q.row(r) - Q.row(j)).squaredNorm();
-                                    candidates.distance[count] = d2;
-                                    candidates.index[count] = r;
-                                    count += (d2 <= R2) & (r != j);
-                                }
-                            }
-                        }
-                    }
-                    if (count >= static_cast<std::size_t>(k)) {
-                        if (!sorted) {
-                            for (std::size_t a = 0; a < count; ++a) {
-                                candidates.index[a] =
-                                    original[static_cast<std::size_t>(candidates.index[a])];
-                            }
-                        }
-                        const int i = rowOf(j);
-                        storeNearest(candidates, count, k, &result.indices(i, 0),
-                                     &result.squaredDistances(i, 0));
-                        guess = radiusGuess * std::sqrt(result.squaredDistances(i, k - 1));
-                        found = true;
-                        break;
-                    }
-                    // About (count + 1) / R^2 points per area: aim at k + 1 with a margin.
-                    R *= std::max(1.25, 1.1 * std::sqrt((k + 1.0) / (count + 1.0)));
-                }
-                if (!found) {
-                    guess = radiusGuess * std::sqrt(searchWide(j, candidates, scratch));
+            const int i = order_.rowOf(j);
+            storeNearest(w.candidates, count, k_, &result_.indices(i, 0),
+                         &result_.squaredDistances(i, 0));
+            w.guess = radiusGuess * std::sqrt(result_.squaredDistances(i, k_ - 1));
+            return true;
+        }
+        // About (count + 1) / R^2 points per area: aim at k + 1 with a margin.
+        R *= std::max(1.25, 1.1 * std::sqrt((k_ + 1.0) / (count + 1.0)));
+    }
+}
+
+bool CellSearch::boxInTable(const double u[3], double R, const std::int64_t origin[3], int lo[3],
+                            int hi[3]) const
+{
+    const double reach = R * grid_.scale * (1.0 + 1e-9) + stepMargin;
+    bool inside = true;
+    for (int d = 0; d < 3; ++d) {
+        // Sub-cells outside the grid hold no point.
+        const std::int64_t a = std::max<std::int64_t>(
+            0, static_cast<std::int64_t>(std::floor((u[d] - reach) / subSteps_)));
+        const std::int64_t b = std::min<std::int64_t>(
+            lastSub_, static_cast<std::int64_t>(std::floor((u[d] + reach) / subSteps_)));
+        lo[d] = static_cast<int>(a - origin[d]);
+        hi[d] = static_cast<int>(b - origin[d]);
+        inside = inside && lo[d] >= 0 && hi[d] < width;
+    }
+    return inside;
+}
+
+std::size_t CellSearch::pointsWithin(int j, double R, const int lo[3], const int hi[3],
+                                     Worker& w) const
+{
+    const double R2 = R * R;
+    std::size_t count = 0;
+    for (int Z = lo[2]; Z <= hi[2]; ++Z) {
+        for (int Y = lo[1]; Y <= hi[1]; ++Y) {
+            for (int X = lo[0]; X <= hi[0]; ++X) {
+                const Run run = w.table[static_cast<std::size_t>((Z * width + Y) * width + X)];
+                for (int r = run.first; r < run.end; ++r) { // branch-free
+                    const double d2 = (Q_.row(r) - Q_.row(j)).squaredNorm();
+                    w.candidates.distance[count] = d2;
+                    w.candidates.index[count] = r;
+                    count += (d2 <= R2) & (r != j);
                 }
             }
         }
     }
+    return count;
+}
+
+double CellSearch::searchWide(Eigen::Index j, Candidates& c, std::vector<double>& scratch) const
+{
+    double u[3];
+    std::int64_t q[3];
+    for (int d = 0; d < 3; ++d) {
+        u[d] = grid_.steps(Q_(j, d), d);
+        q[d] = static_cast<std::int64_t>(u[d]);
+    }
+    for (int l = level_;; ++l) {
+        const std::int64_t top = (std::int64_t(1) << (mortonBitsPerAxis - l)) - 1;
+        std::int64_t cc[3];
+        for (int d = 0; d < 3; ++d) {
+            cc[d] = q[d] >> l;
+        }
+        const std::size_t count = gatherWide(j, cc, l, top, c);
+        if (count < static_cast<std::size_t>(k_)) {
+            continue;
+        }
+        scratch.assign(c.distance.begin(), c.distance.begin() + count);
+        std::nth_element(scratch.begin(), scratch.begin() + (k_ - 1), scratch.end());
+        const double kth = scratch[static_cast<std::size_t>(k_ - 1)];
+        if (!blockHolds(u, cc, l, top, kth)) {
+            continue;
+        }
+        std::size_t kept = 0;
+        for (std::size_t a = 0; a < count; ++a) {
+            c.distance[kept] = c.distance[a];
+            c.index[kept] = c.index[a];
+            kept += c.distance[a] <= kth;
+        }
+        storeNearest(c, kept, k_, &result_.indices(order_.rowOf(j), 0),
+                     &result_.squaredDistances(order_.rowOf(j), 0));
+        return kth;
+    }
+}
+
+std::size_t CellSearch::gatherWide(Eigen::Index j, const std::int64_t cc[3], int l,
+                                   std::int64_t top, Candidates& c) const
+{
+    std::size_t count = 0;
+    forEachCellAround(cc, top, [&](int, int, int, std::uint64_t code) {
+        const auto from = std::lower_bound(keys_.begin(), keys_.end(), code << (3 * l));
+        const auto to = std::lower_bound(from, keys_.end(), (code + 1) << (3 * l));
+        for (auto at = from; at != to; ++at) {
+            const Eigen::Index r = at - keys_.begin();
+            if (r == j) {
+                continue;
+            }
+            c.reserve(count + 1);
+            c.distance[count] = (Q_.row(r) - Q_.row(j)).squaredNorm();
+            c.index[count] = order_.rowOf(r);
+            ++count;
+        }
+    });
+    return count;
+}
+
+bool CellSearch::blockHolds(const double u[3], const std::int64_t cc[3], int l, std::int64_t top,
+                            double kth) const
+{
+    const double reach = std::sqrt(kth) * grid_.scale * (1.0 + 1e-9) + stepMargin;
+    bool inside = true;
+    for (int d = 0; d < 3; ++d) {
+        inside = inside && (cc[d] == 0 || std::floor(u[d] - reach) >= double((cc[d] - 1) << l)) &&
+                 (cc[d] == top || std::floor(u[d] + reach) < double((cc[d] + 2) << l));
+    }
+    return inside;
+}
+
+} // namespace
+
+void Neighbourhoods::allocate(Eigen::Index rows, int k)
+{
+    indices.resize(rows, k);
+    squaredDistances.resize(rows, k);
+    adviseHugePagesOf(indices);
+    adviseHugePagesOf(squaredDistances);
+}
+
+Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options)
+{
+    const int k = options.k;
+    checkNeighbourInput(P, k);
+    const Eigen::Index n = P.rows();
+    const int threads = threadCount(options.threads);
+    Neighbourhoods result;
+    result.allocate(n, k);
+    const MortonGrid grid(P);
+    if (!(grid.scale > 0.0)) {
+        coincidentNeighbours(result, n, k);
+        return result;
+    }
+    const KeyOrder order = keyOrder(P, grid, threads);
+    releaseIdleThreads(); // the level and the cells' hash table are serial
+    const int level = searchLevel(order.keys, n, k);
+    const Cells cells(order.keys, level);
+    const CellSearchInput in{grid, order.points(P), order, cells, level, k};
+    CellSearch(in, result).run(threads);
     return result;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// k nearest neighbours of every point, and the cloud's mean point spacing.
+// k nearest neighbours of every point, and the cloud's mean point spacing (Sec. 2.1).
+// Design: docs/design/neighbourhoods.md.
 #pragma once
 
 #include <vector>
@@ -10,9 +11,9 @@ namespace featurelines {
 
 struct NeighbourOptions
 {
-    /// Neighbours per point, the point itself not counted. Must be >= 3 and < #P.
+    /// Neighbours per point, the point itself not counted; at least 3, below #P (default 16).
     int k = 16;
-    /// Worker threads for the queries (0: OpenMP's default).
+    /// Worker threads for the queries, 0 for OpenMP's default (default 0).
     int threads = 0;
 };
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Normals by principal component analysis of each point's k nearest neighbours.
+// Normals by principal component analysis of each point's k nearest neighbours (Sec. 2.1).
+// Design: docs/design/neighbourhoods.md.
 #pragma once
 
 #include <vector>
@@ -10,8 +11,9 @@ namespace featurelines {
 
 struct NormalOptions
 {
-    /// Neighbours used per point, at most Neighbourhoods::k() (0: all of them).
+    /// Neighbours used per point, 2 to Neighbourhoods::k(); 0 for all of them (default 0).
     int k = 0;
+    /// Worker threads, 0 for OpenMP's default (default 0).
     int threads = 0;
 };
 
@@ -42,11 +44,8 @@ struct Moments
     Eigen::Matrix3d covariance;
 };
 
-/// The mean and covariance of the rows of P taken `stride` apart (#P >= 1): first and second
-/// moments about the first row (far from the origin, moments about the origin would lose
-/// their digits), summed in blocks of fixed size on the threads and then block by block, so
-/// the same at any number of threads. The cloud-wide checks (a line, a strip, a plane) read
-/// its eigenvalues and eigenvectors.
+/// The mean and covariance of the rows of P taken `stride` apart (#P >= 1), taken about the
+/// first row; the same at any number of threads.
 Moments momentsOf(const PointMatrix& P, Eigen::Index stride = 1);
 
 /// momentsOf(P, stride).covariance.

@@ -173,6 +173,153 @@ double insideRadiusSquared(const Candidates& c, const std::vector<int>& hull)
     return smallest;
 }
 
+/// The cloud the rings are built on.
+struct RingInput
+{
+    const PointMatrix& P;
+    const NormalMatrix& normals;
+    const Neighbourhoods& N;
+};
+
+/// What one thread reuses from point to point.
+struct RingWorker
+{
+    Candidates candidates, images;
+    std::vector<int> order, hull;
+
+    explicit RingWorker(int k) : candidates(k + 1), images(k) {}
+};
+
+/// The k nearest neighbours of point i projected onto the tangent plane (u, v) and mapped to
+/// w = 2 q / |q|^2, those coincident with the point left out.
+void tangentImages(const RingInput& in, Eigen::Index i, const Eigen::Vector3d& u,
+                   const Eigen::Vector3d& v, Candidates& images)
+{
+    const int k = in.N.k();
+    const double tooClose = coincidentFraction * in.N.squaredDistances(i, k - 1);
+    images.clear();
+    for (int j = 0; j < k; ++j) {
+        const int q = in.N.indices(i, j);
+        const Eigen::Vector3d d = (in.P.row(q) - in.P.row(i)).transpose();
+        const double x = d.dot(u);
+        const double y = d.dot(v);
+        const double s = x * x + y * y;
+        if (!(s > tooClose)) {
+            continue;
+        }
+        images.add(2.0 * x / s, 2.0 * y / s, q);
+    }
+}
+
+/// Floater and Reimers: q is a Delaunay neighbour of p (at the origin) iff its half-plane
+/// {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff 2 q / |q|^2 is a vertex of the
+/// convex hull of these points and the origin. The hull of the origin and the images, in
+/// w.hull (candidate numbers of w.candidates): first of the nearest firstCandidates, then again
+/// with the farther images that may change it.
+void imageHull(RingWorker& w)
+{
+    Candidates& candidates = w.candidates;
+    const Candidates& images = w.images;
+    candidates.clear();
+    candidates.add(0.0, 0.0, -1);
+    const int first = std::min(images.count, firstCandidates);
+    for (int c = 0; c < first; ++c) {
+        candidates.add(images.x[c], images.y[c], images.index[c]);
+    }
+    convexHull(candidates, w.order, w.hull);
+    if (first < images.count) {
+        const double inside = insideRadiusSquared(candidates, w.hull) * (1.0 - insideMargin);
+        for (int c = first; c < images.count; ++c) {
+            const double x = images.x[c], y = images.y[c];
+            if (!(x * x + y * y < inside) && !strictlyInside(candidates, w.hull, x, y)) {
+                candidates.add(x, y, images.index[c]);
+            }
+        }
+        if (candidates.count > first + 1) {
+            convexHull(candidates, w.order, w.hull);
+        }
+    }
+}
+
+/// Appends the hull's neighbours to `rings` in angular order; returns their number. The hull
+/// runs counter-clockwise, so its vertices are already in angular order around the point,
+/// which lies inside or on it. A border point is a vertex of its own hull: the ring then starts
+/// just after it and fans across the inside. Else it starts at the direction closest to -u
+/// (angle -pi), as atan2 would sort it.
+int appendRing(const Candidates& candidates, const std::vector<int>& hull, std::vector<int>& rings)
+{
+    const std::size_t size = hull.size();
+    std::size_t start = 0;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t h = 0; h < size; ++h) {
+        const int c = hull[h];
+        if (candidates.index[c] < 0) {
+            start = h + 1;
+            break;
+        }
+        const double angle = pseudoAngle(candidates.x[c], candidates.y[c]);
+        if (angle < smallest) {
+            smallest = angle;
+            start = h;
+        }
+    }
+    int count = 0;
+    for (std::size_t h = 0; h < size; ++h) {
+        const int q = candidates.index[hull[(start + h) % size]];
+        if (q >= 0) {
+            rings.push_back(q);
+            ++count;
+        }
+    }
+    return count;
+}
+
+/// The 1-ring of point i appended to `rings`; returns its size (0 where the normal is
+/// undefined).
+int ringOf(const RingInput& in, Eigen::Index i, RingWorker& w, std::vector<int>& rings)
+{
+    const Eigen::Vector3d normal = in.normals.row(i).transpose();
+    if (!(normal.norm() > 0.0) || !normal.allFinite()) {
+        return 0;
+    }
+    const Eigen::Vector3d n = normal.normalized();
+    const Eigen::Vector3d u = n.unitOrthogonal();
+    const Eigen::Vector3d v = n.cross(u);
+    tangentImages(in, i, u, v, w.images);
+    imageHull(w);
+    return appendRing(w.candidates, w.hull, rings);
+}
+
+/// Each block of points first gathers its rings on its own, then the blocks are packed into
+/// the compressed rows.
+constexpr Eigen::Index ringBlock = 4096;
+
+/// The blocks' rings packed into compressed rows (the blocks' storage is released).
+RingNeighbourhoods packRings(std::vector<std::vector<int>>& blockRings,
+                             const std::vector<int>& counts, int threads)
+{
+    const Eigen::Index n = static_cast<Eigen::Index>(counts.size());
+    const Eigen::Index blocks = static_cast<Eigen::Index>(blockRings.size());
+    RingNeighbourhoods result;
+    result.offsets.resize(n + 1);
+    result.offsets[0] = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        result.offsets[i + 1] = result.offsets[i] + counts[i];
+    }
+    result.indices.resize(result.offsets[n]);
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+    for (Eigen::Index b = 0; b < blocks; ++b) {
+        std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
+        auto from = rings.begin();
+        for (Eigen::Index i = b * ringBlock; i < std::min(n, (b + 1) * ringBlock); ++i) {
+            std::copy(from, from + counts[i], result.indices.begin() + result.offsets[i]);
+            from += counts[i];
+        }
+        std::vector<int>().swap(rings);
+    }
+    return result;
+}
+
 } // namespace
 
 RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& normals,
@@ -184,118 +331,23 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
                                     ") and neighbourhoods (" + std::to_string(N.size()) +
                                     ") must describe the same cloud");
     }
+    const RingInput in{P, normals, N};
     const Eigen::Index n = P.rows();
-    const int k = N.k();
-    // Each block of points first gathers its rings on its own, then the blocks are packed into
-    // the compressed rows.
-    constexpr Eigen::Index block = 4096;
-    const Eigen::Index blocks = (n + block - 1) / block;
+    const Eigen::Index blocks = (n + ringBlock - 1) / ringBlock;
     std::vector<std::vector<int>> blockRings(static_cast<size_t>(blocks));
     std::vector<int> counts(n, 0);
-
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
-        Candidates candidates(k + 1), images(k);
-        std::vector<int> order, hull;
+        RingWorker worker(N.k());
 #pragma omp for schedule(static, 1)
         for (Eigen::Index b = 0; b < blocks; ++b) {
             std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
-            for (Eigen::Index i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-                const Eigen::Vector3d normal = normals.row(i).transpose();
-                if (!(normal.norm() > 0.0) || !normal.allFinite()) {
-                    continue;
-                }
-                const Eigen::Vector3d w = normal.normalized();
-                const Eigen::Vector3d u = w.unitOrthogonal();
-                const Eigen::Vector3d v = w.cross(u);
-                const double tooClose = coincidentFraction * N.squaredDistances(i, k - 1);
-
-                // Floater and Reimers: q is a Delaunay neighbour of p (at the origin) iff its
-                // half-plane {x : x.q <= |q|^2 / 2} bounds p's Voronoi cell, i.e. iff
-                // 2 q / |q|^2 is a vertex of the convex hull of these points and the origin.
-                images.clear();
-                for (int j = 0; j < k; ++j) {
-                    const int q = N.indices(i, j);
-                    const Eigen::Vector3d d = (P.row(q) - P.row(i)).transpose();
-                    const double x = d.dot(u);
-                    const double y = d.dot(v);
-                    const double s = x * x + y * y;
-                    if (!(s > tooClose)) {
-                        continue;
-                    }
-                    images.add(2.0 * x / s, 2.0 * y / s, q);
-                }
-                candidates.clear();
-                candidates.add(0.0, 0.0, -1);
-                const int first = std::min(images.count, firstCandidates);
-                for (int c = 0; c < first; ++c) {
-                    candidates.add(images.x[c], images.y[c], images.index[c]);
-                }
-                convexHull(candidates, order, hull);
-                if (first < images.count) {
-                    const double inside =
-                        insideRadiusSquared(candidates, hull) * (1.0 - insideMargin);
-                    for (int c = first; c < images.count; ++c) {
-                        const double x = images.x[c], y = images.y[c];
-                        if (!(x * x + y * y < inside) && !strictlyInside(candidates, hull, x, y)) {
-                            candidates.add(x, y, images.index[c]);
-                        }
-                    }
-                    if (candidates.count > first + 1) {
-                        convexHull(candidates, order, hull);
-                    }
-                }
-
-                // The hull runs counter-clockwise, so its vertices are already in angular order
-                // around the point, which lies inside or on it. A border point is a vertex of its
-                // own hull: the ring then starts just after it and fans across the inside. Else it
-                // starts at the direction closest to -u (angle -pi), as atan2 would sort it.
-                const std::size_t size = hull.size();
-                std::size_t start = 0;
-                double smallest = std::numeric_limits<double>::infinity();
-                for (std::size_t h = 0; h < size; ++h) {
-                    const int c = hull[h];
-                    if (candidates.index[c] < 0) {
-                        start = h + 1;
-                        break;
-                    }
-                    const double angle = pseudoAngle(candidates.x[c], candidates.y[c]);
-                    if (angle < smallest) {
-                        smallest = angle;
-                        start = h;
-                    }
-                }
-                int count = 0;
-                for (std::size_t h = 0; h < size; ++h) {
-                    const int q = candidates.index[hull[(start + h) % size]];
-                    if (q >= 0) {
-                        rings.push_back(q);
-                        ++count;
-                    }
-                }
-                counts[i] = count;
+            for (Eigen::Index i = b * ringBlock; i < std::min(n, (b + 1) * ringBlock); ++i) {
+                counts[i] = ringOf(in, i, worker, rings);
             }
         }
     }
-
-    RingNeighbourhoods result;
-    result.offsets.resize(n + 1);
-    result.offsets[0] = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-        result.offsets[i + 1] = result.offsets[i] + counts[i];
-    }
-    result.indices.resize(result.offsets[n]);
-#pragma omp parallel for schedule(static, 1) num_threads(threadCount(options.threads))
-    for (Eigen::Index b = 0; b < blocks; ++b) {
-        std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
-        auto from = rings.begin();
-        for (Eigen::Index i = b * block; i < std::min(n, (b + 1) * block); ++i) {
-            std::copy(from, from + counts[i], result.indices.begin() + result.offsets[i]);
-            from += counts[i];
-        }
-        std::vector<int>().swap(rings);
-    }
-    return result;
+    return packRings(blockRings, counts, threadCount(options.threads));
 }
 
 } // namespace featurelines

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The meshless 1-ring neighbourhood of Floater and Reimers (2001): the k nearest neighbours are
-// projected onto the point's tangent plane and only the point's Delaunay neighbours in that
-// plane are kept. Sec. 3 of Demarsin et al. (2008) labels inner and border points on it.
+// The meshless 1-ring neighbourhood of Floater and Reimers (2001), on which Sec. 3 labels inner
+// and border points. Design: docs/design/neighbourhoods.md.
 #pragma once
 
 #include <vector>
@@ -24,6 +23,7 @@ struct RingNeighbourhoods
 
 struct RingOptions
 {
+    /// Worker threads, 0 for OpenMP's default (default 0).
     int threads = 0;
 };
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Multi-resolution histogram thresholding of curvature values (Sec. 2.2-2.4).
+// Design: docs/design/thresholds.md.
 #pragma once
 
 #include <vector>
@@ -34,14 +35,14 @@ enum class ThresholdSearch
 
 struct ThresholdOptions
 {
-    /// L_start, the start resolution. The paper's default is 50.
+    /// L_start, the bins of the start histogram, at least 2 (default 50, the paper's; Sec. 2.2).
     int bins = 50;
-    /// Percentage of the highest values removed before the histogram is built (Sec. 2.4).
+    /// Percent of the highest values removed first, 0 to below 100 (default 0; Sec. 2.4).
     double outlierPercent = 0.0;
-    /// Smallest peak b1 a threshold may follow, in percent of the values searched. Sec. 2.2
-    /// wants a patch's peak followed by a valley; since e = b1 when b2 = 0, a few stray values
-    /// before an empty bin would otherwise beat a real but shallow valley. 0: the paper as is.
+    /// Smallest peak b1 a threshold may follow, percent of the values searched, 0 to 100
+    /// (default 1; 0: the paper as is).
     double minPeakPercent = 1.0;
+    /// The start_curv values weighed (default AllStarts).
     ThresholdSearch search = ThresholdSearch::AllStarts;
 };
 
@@ -66,7 +67,8 @@ struct ThresholdResult
 /// One threshold of `values`: the tau and start_curv that maximise e(tau, start_curv).
 /// Throws std::invalid_argument when fewer than 2 distinct values remain, or when no run of
 /// bins below the last one holds minPeakPercent of the values (nothing to separate).
-ThresholdResult findThreshold(const std::vector<double>& values, const ThresholdOptions& options = {});
+ThresholdResult findThreshold(const std::vector<double>& values,
+                              const ThresholdOptions& options = {});
 
 /// Sec. 2.3: the next lower threshold, searched on the values <= `threshold` only.
 ThresholdResult findLowerThreshold(const std::vector<double>& values, double threshold,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Sec. 3: low / inner / border / noisy labels of a smooth region at one curvature threshold,
 // and the region growing on those labels that rings each patch with single-point clusters.
+// Design: docs/design/labels.md.
 #pragma once
 
 #include <cstdint>
@@ -18,8 +19,7 @@ enum class PointLabel : std::uint8_t
     Inner = 1,
     /// Any other high point with at least `minInnerNeighbours` inner points in its 1-ring.
     Border = 2,
-    /// A high point that is neither: isolated noise, counted as low afterwards (Sec. 3). Kept
-    /// as its own label so a user interface can colour it as the paper's Fig. 7 a does.
+    /// A high point that is neither: isolated noise, counted as low afterwards (Sec. 3).
     Noisy = 3,
     /// Not in the region being labelled.
     Outside = 255,
@@ -27,8 +27,7 @@ enum class PointLabel : std::uint8_t
 
 struct LabelOptions
 {
-    /// Sec. 3: "two neighbors are inner points" — the ring has 5-6 points, distributed around p,
-    /// so a border point typically sees some low and some inner points.
+    /// Inner points a border point needs in its 1-ring (default 2, Sec. 3).
     int minInnerNeighbours = 2;
 };
 

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Disjoint sets (union-find) that threads may join at the same time: the connected components
-// of a graph whose edges are visited in a parallel loop. Each set's representative is its
-// smallest element, whatever the order in which the edges were joined, so the components and
-// their representatives are the same at any number of threads.
+// Disjoint sets (union-find) that threads may join at once: the connected components of a graph
+// visited in a parallel loop (regions, patches, clusters), the same at any number of threads.
+// Design: docs/design/pipeline.md (Support).
 #pragma once
 
 #include <atomic>
@@ -12,6 +11,8 @@
 
 namespace featurelines {
 
+/// Each set's representative is its smallest element, whatever the order in which the edges
+/// were joined.
 class DisjointSets
 {
 public:

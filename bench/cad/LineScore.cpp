@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "FeatureLines/Extraction.h"
 #include "PointGrid.h"
 
 namespace featurelines::bench {
@@ -14,6 +15,20 @@ namespace featurelines::bench {
 namespace {
 
 constexpr double notDefined = std::numeric_limits<double>::quiet_NaN();
+
+/// The core's type of a line type: its name is the core's (featurelines::lineTypeName).
+featurelines::LineType coreLineType(LineType type)
+{
+    switch (type) {
+    case LineType::Sharp:
+        return featurelines::LineType::Sharp;
+    case LineType::Smooth:
+        return featurelines::LineType::Smooth;
+    case LineType::Boundary:
+        return featurelines::LineType::Boundary;
+    }
+    return featurelines::LineType::Sharp;
+}
 
 void checkPositive(double value, const char* what)
 {
@@ -241,30 +256,19 @@ double quantile(std::vector<double> values, double share)
 
 std::string lineTypeName(LineType type)
 {
-    switch (type) {
-    case LineType::Sharp:
-        return "sharp";
-    case LineType::Smooth:
-        return "smooth";
-    case LineType::Boundary:
-        return "boundary";
-    }
-    return "sharp";
+    return featurelines::lineTypeName(coreLineType(type));
 }
 
 LineType lineTypeFromName(const std::string& name)
 {
-    if (name == "sharp") {
-        return LineType::Sharp;
+    for (int t = 0; t < lineTypeCount; ++t) {
+        if (name == lineTypeName(static_cast<LineType>(t))) {
+            return static_cast<LineType>(t);
+        }
     }
-    if (name == "smooth") {
-        return LineType::Smooth;
-    }
-    if (name == "boundary") {
-        return LineType::Boundary;
-    }
-    throw std::invalid_argument("Unknown feature line type \"" + name +
-                                "\" (expected sharp, smooth or boundary).");
+    throw std::invalid_argument(
+        "Unknown feature line type \"" + name + "\" (expected " + lineTypeName(LineType::Sharp) +
+        ", " + lineTypeName(LineType::Smooth) + " or " + lineTypeName(LineType::Boundary) + ").");
 }
 
 PointMatrix resamplePolyline(const TypedPolyline& line, double step)

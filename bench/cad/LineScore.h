@@ -28,7 +28,8 @@ enum class LineType
 };
 constexpr int lineTypeCount = 3;
 
-/// "sharp", "smooth" or "boundary", the spelling of the lines JSON format.
+/// The core's name of the type (featurelines::lineTypeName), the spelling of the lines JSON
+/// format.
 std::string lineTypeName(LineType type);
 /// The inverse of lineTypeName; throws std::invalid_argument for any other word.
 LineType lineTypeFromName(const std::string& name);
