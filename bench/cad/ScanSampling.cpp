@@ -640,6 +640,62 @@ ScannedCloud sampleLikeAScanner(const TopoDS_Shape& shape, const ScanOptions& op
     return result;
 }
 
+std::vector<TypedPolyline> truthCoveredBy(const std::vector<TypedPolyline>& truth,
+                                          const PointMatrix& P, double distance)
+{
+    if (!(distance > 0.0) || !std::isfinite(distance)) {
+        throw std::invalid_argument("The covering distance must be a positive length.");
+    }
+    PointGrid grid(distance);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        grid.insert(P.row(i).transpose(), static_cast<int>(i));
+    }
+    std::vector<TypedPolyline> covered;
+    for (const TypedPolyline& line : truth) {
+        const Eigen::Index n = line.points.rows();
+        std::vector<char> seen(static_cast<std::size_t>(n));
+        Eigen::Index firstUnseen = -1;
+        for (Eigen::Index k = 0; k < n; ++k) {
+            seen[static_cast<std::size_t>(k)] =
+                grid.anyWithin(line.points.row(k).transpose(), distance) ? 1 : 0;
+            if (!seen[static_cast<std::size_t>(k)] && firstUnseen < 0) {
+                firstUnseen = k;
+            }
+        }
+        if (firstUnseen < 0) {
+            covered.push_back(line);
+            continue;
+        }
+        // A closed line is walked from an unseen vertex round to it again, so that no run
+        // of seen vertices wraps round its start.
+        const Eigen::Index start = line.closed ? firstUnseen : 0;
+        const Eigen::Index steps = line.closed ? n + 1 : n;
+        std::vector<Eigen::Index> run;
+        const auto flush = [&]() {
+            if (run.size() >= 2) {
+                TypedPolyline piece;
+                piece.type = line.type;
+                piece.points.resize(static_cast<Eigen::Index>(run.size()), 3);
+                for (std::size_t r = 0; r < run.size(); ++r) {
+                    piece.points.row(static_cast<Eigen::Index>(r)) = line.points.row(run[r]);
+                }
+                covered.push_back(std::move(piece));
+            }
+            run.clear();
+        };
+        for (Eigen::Index s = 0; s < steps; ++s) {
+            const Eigen::Index k = (start + s) % n;
+            if (seen[static_cast<std::size_t>(k)]) {
+                run.push_back(k);
+            } else {
+                flush();
+            }
+        }
+        flush();
+    }
+    return covered;
+}
+
 ScanOptions drawScanOptions(std::uint32_t seed, const ScanDrawRanges& r)
 {
     if (!(r.minPoints > 1.0 && r.maxPoints >= r.minPoints) || r.noiseLevels.empty() ||

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "FeatureLines/PointCloud.h"
+#include "LineScore.h"
 
 namespace featurelines::bench {
 
@@ -127,6 +128,13 @@ struct ScannedCloud
 /// std::invalid_argument for an option out of range or a shape without faces, std::runtime_error
 /// when the triangulation fails or no point is seen.
 ScannedCloud sampleLikeAScanner(const TopoDS_Shape& shape, const ScanOptions& options);
+
+/// The parts of the true edges that lie within `distance` (model units, > 0) of a point of P
+/// (#P by 3): what a cloud that sees only part of the shape (one view, holes) can be scored
+/// against. A line is cut where it leaves the cloud; its pieces keep its type, and a closed
+/// line stays closed only when all of it is covered.
+std::vector<TypedPolyline> truthCoveredBy(const std::vector<TypedPolyline>& truth,
+                                          const PointMatrix& P, double distance);
 
 /// The ranges drawScanOptions draws from.
 struct ScanDrawRanges

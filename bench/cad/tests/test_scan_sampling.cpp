@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "ScanSampling.h"
+#include "ShapeSampling.h"
 
 using namespace featurelines::bench;
 
@@ -146,6 +147,44 @@ TEST(ScanSampling, ScanLinesSeeOnlyTheFacesTurnedToTheView)
         EXPECT_NEAR(onFace[static_cast<size_t>(a)] / static_cast<double>(cloud.points.rows()),
                     projected[a] / projected.sum(), 0.02);
     }
+}
+
+TEST(ScanSampling, TruthIsCutToWhatTheCloudCovers)
+{
+    // Seen from straight above: the top face's four edges in full, the vertical edges near
+    // their upper ends only, the bottom edges not at all.
+    const Eigen::Vector3d size(50, 40, 30);
+    const TopoDS_Shape box = makeBox(size);
+    ScanOptions options;
+    options.model = ScanModel::ScanLines;
+    options.points = 10000;
+    options.views = {view({0, 0, -1}, {1, 0, 0})};
+    const ScannedCloud cloud = sampleLikeAScanner(box, options);
+    TruthOptions truthOptions;
+    truthOptions.step = 0.1 * cloud.spacing;
+    const std::vector<TypedPolyline> truth = truthEdges(box, truthOptions);
+    ASSERT_EQ(truth.size(), 12u);
+    // Farther than the rows are apart, so that the edges along the rows are reached.
+    const double across = options.rowSpacingRatio * cloud.rowStep;
+    const double reach = 1.5 * across;
+    const std::vector<TypedPolyline> covered = truthCoveredBy(truth, cloud.points, reach);
+    double topLength = 0.0;
+    double verticalLength = 0.0;
+    for (const TypedPolyline& line : covered) {
+        EXPECT_EQ(line.type, LineType::Sharp);
+        for (Eigen::Index k = 1; k < line.points.rows(); ++k) {
+            const double length = (line.points.row(k) - line.points.row(k - 1)).norm();
+            const double z = line.points(k, 2);
+            EXPECT_GT(z, size.z() - reach - 1e-9);
+            const bool top =
+                std::abs(z - size.z()) < 1e-9 && std::abs(line.points(k - 1, 2) - size.z()) < 1e-9;
+            (top ? topLength : verticalLength) += length;
+        }
+    }
+    EXPECT_NEAR(topLength, 2 * (size.x() + size.y()), 1e-6);
+    // A corner's nearest point lies within a step along and a row across.
+    EXPECT_GT(verticalLength, 4 * (reach - std::hypot(cloud.rowStep, across)));
+    EXPECT_LE(verticalLength, 4 * reach + 1e-9);
 }
 
 TEST(ScanSampling, MergedViewsOverlapAtDoubleDensity)
