@@ -46,14 +46,6 @@ constexpr double poissonDensity = 0.57;
 /// Parametric resolution passed to OpenCASCADE's local-property evaluators.
 constexpr double propertyResolution = 1e-9;
 
-/// One triangle of the triangulation with what is needed to place a candidate in it.
-struct SurfaceTriangle
-{
-    int face;              // index into the face list
-    Eigen::Vector3d p[3];  // corners in space (location applied)
-    Eigen::Vector2d uv[3]; // corners in the face's (u, v)
-};
-
 Eigen::Vector3d toEigen(const gp_XYZ& p)
 {
     return {p.X(), p.Y(), p.Z()};
@@ -206,6 +198,70 @@ TypedPolyline sampleEdge(const TopoDS_Edge& edge, LineType type, double step)
 
 } // namespace
 
+SurfaceTriangulation::SurfaceTriangulation(const TopoDS_Shape& shape, double deflection)
+{
+    BRepMesh_IncrementalMesh mesher(shape, deflection, false, 0.2, false);
+    if (!mesher.IsDone()) {
+        throw std::runtime_error("OpenCASCADE could not triangulate the shape to sample it.");
+    }
+    double total = 0.0;
+    for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
+        const TopoDS_Face face = TopoDS::Face(ex.Current());
+        TopLoc_Location loc;
+        const Handle(Poly_Triangulation)& mesh = BRep_Tool::Triangulation(face, loc);
+        if (mesh.IsNull() || !mesh->HasUVNodes()) {
+            throw std::runtime_error("OpenCASCADE left a face of the shape without a usable "
+                                     "triangulation.");
+        }
+        const int faceIndex = static_cast<int>(faces.size());
+        faces.push_back(face);
+        const gp_Trsf trsf = loc.Transformation();
+        for (int t = 1; t <= mesh->NbTriangles(); ++t) {
+            int n[3];
+            mesh->Triangle(t).Get(n[0], n[1], n[2]);
+            Triangle tri;
+            tri.face = faceIndex;
+            for (int c = 0; c < 3; ++c) {
+                tri.p[c] = toEigen(mesh->Node(n[c]).Transformed(trsf).XYZ());
+                const gp_Pnt2d uv = mesh->UVNode(n[c]);
+                tri.uv[c] = {uv.X(), uv.Y()};
+            }
+            const double a = 0.5 * (tri.p[1] - tri.p[0]).cross(tri.p[2] - tri.p[0]).norm();
+            if (a <= 0.0) {
+                continue;
+            }
+            total += a;
+            triangleList.push_back(tri);
+            cumulativeArea.push_back(total);
+        }
+    }
+    if (triangleList.empty()) {
+        throw std::runtime_error("The triangulation of the shape to sample is empty.");
+    }
+
+    surfaces.reserve(faces.size());
+    for (const TopoDS_Face& f : faces) {
+        surfaces.emplace_back(f);
+    }
+}
+
+std::size_t SurfaceTriangulation::triangleAtArea(double a) const
+{
+    const size_t k = static_cast<size_t>(
+        std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), a) - cumulativeArea.begin());
+    return std::min(k, triangleList.size() - 1);
+}
+
+bool SurfaceTriangulation::place(std::size_t t, double b0, double b1, double b2,
+                                 Eigen::Vector3d& point, Eigen::Vector3d& normal) const
+{
+    const Triangle& tri = triangleList[t];
+    const Eigen::Vector2d uv = b0 * tri.uv[0] + b1 * tri.uv[1] + b2 * tri.uv[2];
+    const size_t f = static_cast<size_t>(tri.face);
+    return evaluateFace(surfaces[f], faces[f].Orientation() == TopAbs_REVERSED, uv.x(), uv.y(),
+                        point, normal);
+}
+
 double shapeArea(const TopoDS_Shape& shape)
 {
     GProp_GProps props;
@@ -243,53 +299,8 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
     }
 
     // A fine triangulation carries the (u, v) of its nodes: candidates are drawn by area on it.
-    BRepMesh_IncrementalMesh mesher(shape, options.meshDeflectionFactor * r, false, 0.2, false);
-    if (!mesher.IsDone()) {
-        throw std::runtime_error("OpenCASCADE could not triangulate the shape to sample it.");
-    }
-    std::vector<TopoDS_Face> faces;
-    std::vector<SurfaceTriangle> triangles;
-    std::vector<double> cumulativeArea;
-    double total = 0.0;
-    for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
-        const TopoDS_Face face = TopoDS::Face(ex.Current());
-        TopLoc_Location loc;
-        const Handle(Poly_Triangulation)& mesh = BRep_Tool::Triangulation(face, loc);
-        if (mesh.IsNull() || !mesh->HasUVNodes()) {
-            throw std::runtime_error("OpenCASCADE left a face of the shape without a usable "
-                                     "triangulation.");
-        }
-        const int faceIndex = static_cast<int>(faces.size());
-        faces.push_back(face);
-        const gp_Trsf trsf = loc.Transformation();
-        for (int t = 1; t <= mesh->NbTriangles(); ++t) {
-            int n[3];
-            mesh->Triangle(t).Get(n[0], n[1], n[2]);
-            SurfaceTriangle tri;
-            tri.face = faceIndex;
-            for (int c = 0; c < 3; ++c) {
-                tri.p[c] = toEigen(mesh->Node(n[c]).Transformed(trsf).XYZ());
-                const gp_Pnt2d uv = mesh->UVNode(n[c]);
-                tri.uv[c] = {uv.X(), uv.Y()};
-            }
-            const double a = 0.5 * (tri.p[1] - tri.p[0]).cross(tri.p[2] - tri.p[0]).norm();
-            if (a <= 0.0) {
-                continue;
-            }
-            total += a;
-            triangles.push_back(tri);
-            cumulativeArea.push_back(total);
-        }
-    }
-    if (triangles.empty()) {
-        throw std::runtime_error("The triangulation of the shape to sample is empty.");
-    }
-
-    std::vector<BRepAdaptor_Surface> surfaces;
-    surfaces.reserve(faces.size());
-    for (const TopoDS_Face& f : faces) {
-        surfaces.emplace_back(f);
-    }
+    const SurfaceTriangulation mesh(shape, options.meshDeflectionFactor * r);
+    const double total = mesh.area();
 
     // Greedy Poisson-disk thinning of uniform candidates in draw order (random order): a
     // candidate is kept when no kept sample lies within r.
@@ -301,11 +312,8 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
     std::vector<Eigen::Vector3d> points;
     std::vector<Eigen::Vector3d> normals;
     for (long c = 0; c < candidates; ++c) {
-        const double pick = unit(rng) * total;
-        const size_t k = static_cast<size_t>(
-            std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), pick) -
-            cumulativeArea.begin());
-        const SurfaceTriangle& tri = triangles[std::min(k, triangles.size() - 1)];
+        const size_t k = mesh.triangleAtArea(unit(rng) * total);
+        const SurfaceTriangulation::Triangle& tri = mesh.triangles()[k];
         // Uniform barycentric coordinates (square-root warp of two uniforms).
         const double s = std::sqrt(unit(rng));
         const double w2 = unit(rng);
@@ -316,12 +324,9 @@ SampledCloud sampleShape(const TopoDS_Shape& shape, const SamplingOptions& optio
         if (grid.anyWithin(approx, r)) {
             continue;
         }
-        const Eigen::Vector2d uv = b0 * tri.uv[0] + b1 * tri.uv[1] + b2 * tri.uv[2];
-        const TopoDS_Face& face = faces[static_cast<size_t>(tri.face)];
         Eigen::Vector3d p;
         Eigen::Vector3d n;
-        if (!evaluateFace(surfaces[static_cast<size_t>(tri.face)],
-                          face.Orientation() == TopAbs_REVERSED, uv.x(), uv.y(), p, n)) {
+        if (!mesh.place(k, b0, b1, b2, p, n)) {
             continue;
         }
         grid.insert(p, static_cast<int>(points.size()));

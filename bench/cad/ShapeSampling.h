@@ -2,10 +2,15 @@
 // Scan-like point clouds of a B-rep, and the B-rep's edges as typed ground-truth polylines.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include <BRepAdaptor_Surface.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+
+#include <Eigen/Core>
 
 #include "FeatureLines/PointCloud.h"
 #include "LineScore.h"
@@ -35,6 +40,44 @@ struct SampledCloud
     /// N  #P by 3 outward unit normals of the surface at the points (face orientation
     /// respected).
     NormalMatrix normals;
+};
+
+/// A fine triangulation of a shape's faces whose nodes carry their face's (u, v): points are
+/// drawn on its triangles (by area, or where a ray meets them) and then placed exactly on the
+/// face's surface at the interpolated (u, v). Used by sampleShape and by the scanner models
+/// (ScanSampling.h). Meshing stores the triangulation in the shape, as BRepMesh does.
+class SurfaceTriangulation
+{
+public:
+    struct Triangle
+    {
+        int face;              // index of the face, for place()
+        Eigen::Vector3d p[3];  // corners in space (location applied)
+        Eigen::Vector2d uv[3]; // corners in the face's (u, v)
+    };
+
+    /// Triangulates every face of `shape` with chordal deflection `deflection` (model units).
+    /// Throws std::runtime_error when the triangulation fails or is empty.
+    SurfaceTriangulation(const TopoDS_Shape& shape, double deflection);
+
+    /// The triangles of positive area, every face's in turn.
+    const std::vector<Triangle>& triangles() const { return triangleList; }
+    /// Total area of the triangles (model units squared).
+    double area() const { return cumulativeArea.back(); }
+    /// Index of the triangle in which the cumulative area of the triangles reaches `a` (0 to
+    /// area()): a uniform `a` picks triangles by area.
+    std::size_t triangleAtArea(double a) const;
+    /// Point and outward normal (face orientation respected) of the exact surface at the
+    /// (u, v) interpolated with barycentric weights (b0, b1, b2) in triangle t; false where the
+    /// normal is undefined (a pole of a sphere, the apex of a cone).
+    bool place(std::size_t t, double b0, double b1, double b2, Eigen::Vector3d& point,
+               Eigen::Vector3d& normal) const;
+
+private:
+    std::vector<TopoDS_Face> faces;
+    std::vector<BRepAdaptor_Surface> surfaces;
+    std::vector<Triangle> triangleList;
+    std::vector<double> cumulativeArea;
 };
 
 /// Total area of the faces of `shape` (model units squared).

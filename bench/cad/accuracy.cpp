@@ -30,6 +30,7 @@
 #include "CadShapes.h"
 #include "LineScore.h"
 #include "ShapeSampling.h"
+#include "VcmBaseline.h"
 
 using featurelines::PointMatrix;
 using namespace featurelines::bench;
@@ -119,7 +120,7 @@ const char* usage =
     "  --demo-cloud FILE       write the demo cloud (boss_blend, clean, 6 digits) to FILE\n"
     "  --demo-points N         points of the demo cloud (default 40000)\n"
     "  --markdown              print tables as Markdown\n"
-    "  --no-baselines          score the extraction only (no PCL baselines, no sweeps)\n"
+    "  --no-baselines          score the extraction only (no PCL or VCM baselines, no sweeps)\n"
     "  --boundary-gap DEG      the extraction's boundary gap angle (default 120)\n"
     "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
     "                          (default 8; 1: the cloud's own sampling only)\n"
@@ -494,6 +495,9 @@ constexpr double fixedNormalAngle = 20.0;
 /// unlucky choice.
 const std::vector<double> surfaceVariationSweep = {0.005, 0.01, 0.02, 0.03, 0.05, 0.08, 0.12};
 const std::vector<double> normalAngleSweep = {5.0, 10.0, 15.0, 20.0, 30.0, 45.0, 60.0};
+/// CGAL's VCM edge ratio (VcmBaseline.h), fixed at CGAL's example threshold, radii 5 and 2
+/// spacings (VcmOptions' defaults).
+const std::vector<double> vcmSweep = {0.04, 0.06, 0.08, 0.10, 0.12, 0.16, 0.20, 0.25};
 
 struct Row
 {
@@ -749,6 +753,11 @@ void runBaselines(const std::string& name, const std::string& noise, const std::
              [&] { return surfaceVariation(cloud.points); });
     baseline("pcl-normal-angle", fixedNormalAngle, normalAngleSweep,
              [&] { return normalAngleDegrees(cloud.points); });
+    baseline("cgal-vcm", vcmDefaultThreshold, vcmSweep, [&] {
+        VcmOptions vcm;
+        vcm.spacing = s.spacing;
+        return vcmEdgeRatio(cloud.points, vcm);
+    });
 }
 
 /// Samples `part` (seeded), clean and noisy, runs every detector on each cloud and scores it.
