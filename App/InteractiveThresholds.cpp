@@ -25,7 +25,7 @@ namespace {
 
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
 
-/// The core's outlier rule (SmoothEdges.h, SmoothEdgeOptions::histogram): a negative
+/// The core's outlier rule (smooth/SmoothEdgeOptions.h, SmoothEdgeOptions::histogram): a negative
 /// percentage means 1 % for a smoothed region and none for a clean one (Sec. 2.4: outliers
 /// come with noise).
 double outlierPercent(const RegionGeometry& region, const SmoothEdgeOptions& options)
