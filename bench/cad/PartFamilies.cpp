@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Curve2d.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
@@ -21,7 +22,7 @@
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
-#include <BRepLib.hxx>
+#include <BRepLProp_SLProps.hxx>
 #include <BRepOffsetAPI_MakeThickSolid.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -36,6 +37,7 @@
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <ShapeFix_Shape.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <Standard_Failure.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
@@ -178,6 +180,18 @@ bool isValidPart(const TopoDS_Shape& shape, bool closed)
     return props.Mass() > 0.0;
 }
 
+/// `shape` when it is a valid part, else ShapeFix's repair of it (fillets on B-spline faces
+/// come out with tolerances BRepCheck rejects), which the caller checks again.
+TopoDS_Shape healed(const TopoDS_Shape& shape, bool closed)
+{
+    if (isValidPart(shape, closed)) {
+        return shape;
+    }
+    ShapeFix_Shape fix(shape);
+    fix.Perform();
+    return fix.Shape();
+}
+
 /// The one solid of `shape` (booleans return compounds).
 TopoDS_Shape singleSolid(const TopoDS_Shape& shape)
 {
@@ -249,6 +263,7 @@ bool tryStep(PartBuild& build, TopoDS_Shape& shape, const std::string& what,
 {
     try {
         TopoDS_Shape next = step(shape);
+        next = healed(build.closed ? singleSolid(next) : next, build.closed);
         if (build.closed) {
             next = singleSolid(next);
         }
@@ -263,12 +278,40 @@ bool tryStep(PartBuild& build, TopoDS_Shape& shape, const std::string& what,
     return false;
 }
 
-/// The edges of `shape` between two faces meeting at a crease (no tangent join, no seam),
-/// at least `minLength` long, in the shape's own order.
-std::vector<TopoDS_Edge> sharpEdges(const TopoDS_Shape& shape, double minLength)
+/// Largest angle between the outward normals of `f1` and `f2` at three points inside `edge`
+/// (degrees); 0 where a normal is undefined.
+double creaseDegrees(const TopoDS_Edge& edge, const TopoDS_Face& f1, const TopoDS_Face& f2)
 {
-    // Marks tangent joins (fillet borders) G1 so that they are not rounded again.
-    BRepLib::EncodeRegularity(shape, 1e-4);
+    const BRepAdaptor_Curve curve(edge);
+    double largest = 0.0;
+    for (const double share : {0.25, 0.5, 0.75}) {
+        const double t =
+            curve.FirstParameter() + share * (curve.LastParameter() - curve.FirstParameter());
+        gp_Dir normal[2];
+        bool defined = true;
+        for (int k = 0; k < 2; ++k) {
+            const TopoDS_Face& face = k == 0 ? f1 : f2;
+            const gp_Pnt2d uv = BRepAdaptor_Curve2d(edge, face).Value(t);
+            BRepLProp_SLProps props(BRepAdaptor_Surface(face), uv.X(), uv.Y(), 1, 1e-9);
+            defined = defined && props.IsNormalDefined();
+            if (defined) {
+                normal[k] = face.Orientation() == TopAbs_REVERSED ? props.Normal().Reversed()
+                                                                  : props.Normal();
+            }
+        }
+        if (defined) {
+            largest = std::max(largest, normal[0].Angle(normal[1]) * 180.0 / pi);
+        }
+    }
+    return largest;
+}
+
+/// The edges of `shape` between two faces meeting at a crease of at least
+/// RandomPartOptions::minCreaseDegrees (no tangent join, no seam), at least `minLength` long,
+/// in the shape's own order.
+std::vector<TopoDS_Edge> sharpEdges(const TopoDS_Shape& shape, double minLength,
+                                    double minCreaseDegrees)
+{
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
     TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
     std::vector<TopoDS_Edge> result;
@@ -280,13 +323,16 @@ std::vector<TopoDS_Edge> sharpEdges(const TopoDS_Shape& shape, double minLength)
         }
         const TopoDS_Face& f1 = TopoDS::Face(faces.First());
         const TopoDS_Face& f2 = TopoDS::Face(faces.Last());
-        if (f1.IsSame(f2) || BRep_Tool::Continuity(edge, f1, f2) != GeomAbs_C0) {
+        if (f1.IsSame(f2) || GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge)) < minLength) {
             continue;
         }
-        if (GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge)) < minLength) {
-            continue;
+        try {
+            if (creaseDegrees(edge, f1, f2) >= minCreaseDegrees) {
+                result.push_back(edge);
+            }
+        } catch (const Standard_Failure&) {
+            // No curve on a face: not an edge to round.
         }
-        result.push_back(edge);
     }
     return result;
 }
@@ -310,64 +356,81 @@ struct Rounding
     double end = 0.0; // equal to start unless the radius varies along the edge
 };
 
+/// One rounding attempt: `roundings` with their sizes times `factor` (at least minRadius).
+/// True, with `shape` replaced, when OpenCASCADE made a valid part.
+bool roundOnce(PartBuild& build, TopoDS_Shape& shape, const std::vector<Rounding>& roundings,
+               bool chamfer, double factor)
+{
+    const double minR = build.options.minRadius;
+    try {
+        TopoDS_Shape next;
+        double smallest = 0.0;
+        if (chamfer) {
+            BRepFilletAPI_MakeChamfer maker(shape);
+            for (const Rounding& r : roundings) {
+                maker.Add(std::max(minR, factor * r.start), r.edge);
+            }
+            maker.Build();
+            if (!maker.IsDone()) {
+                return false;
+            }
+            next = maker.Shape();
+        } else {
+            BRepFilletAPI_MakeFillet maker(shape);
+            for (const Rounding& r : roundings) {
+                const double r1 = std::max(minR, factor * r.start);
+                const double r2 = std::max(minR, factor * r.end);
+                if (r1 == r2) {
+                    maker.Add(r1, r.edge);
+                } else {
+                    maker.Add(r1, r2, r.edge);
+                }
+                smallest = smallest == 0.0 ? std::min(r1, r2) : std::min({smallest, r1, r2});
+            }
+            maker.Build();
+            if (!maker.IsDone()) {
+                return false;
+            }
+            next = maker.Shape();
+        }
+        next = healed(build.closed ? singleSolid(next) : next, build.closed);
+        if (build.closed) {
+            next = singleSolid(next);
+        }
+        if (!isValidPart(next, build.closed)) {
+            return false;
+        }
+        shape = next;
+        build.noteRadius(smallest);
+        return true;
+    } catch (const Standard_Failure&) {
+    } catch (const std::runtime_error&) {
+    }
+    return false;
+}
+
 /// Tries the roundings with the retry ladder of RandomPartOptions::roundingTries: as drawn,
-/// radii halved, half the edges, one edge at the smallest radius. Returns the try that
-/// worked (0 = as drawn) or -1.
+/// sizes halved, then half the edges, a quarter, ...; the last try takes each edge alone at
+/// the smallest size until one works. Returns the try that worked (0 = as drawn) or -1.
 int applyRoundings(PartBuild& build, TopoDS_Shape& shape, const std::vector<Rounding>& roundings,
                    bool chamfer)
 {
-    const double minR = build.options.minRadius;
-    for (int attempt = 0; attempt < build.options.roundingTries; ++attempt) {
-        size_t count = roundings.size();
-        double factor = attempt == 0 ? 1.0 : 0.5;
-        if (attempt >= 2) {
-            count = std::max<size_t>(1, count >> (attempt - 1));
+    const int tries = build.options.roundingTries;
+    for (int attempt = 0; attempt < tries; ++attempt) {
+        if (attempt > 0 && attempt == tries - 1) {
+            for (const Rounding& r : roundings) {
+                if (roundOnce(build, shape, {r}, chamfer, 0.0)) {
+                    return attempt;
+                }
+            }
+            return -1;
         }
-        if (attempt == build.options.roundingTries - 1 && attempt > 0) {
-            count = 1;
-            factor = 0.0; // the smallest radius
-        }
-        try {
-            TopoDS_Shape next;
-            double smallest = 0.0;
-            if (chamfer) {
-                BRepFilletAPI_MakeChamfer maker(shape);
-                for (size_t i = 0; i < count; ++i) {
-                    maker.Add(std::max(minR, factor * roundings[i].start), roundings[i].edge);
-                }
-                maker.Build();
-                if (!maker.IsDone()) {
-                    continue;
-                }
-                next = maker.Shape();
-            } else {
-                BRepFilletAPI_MakeFillet maker(shape);
-                for (size_t i = 0; i < count; ++i) {
-                    const double r1 = std::max(minR, factor * roundings[i].start);
-                    const double r2 = std::max(minR, factor * roundings[i].end);
-                    if (r1 == r2) {
-                        maker.Add(r1, roundings[i].edge);
-                    } else {
-                        maker.Add(r1, r2, roundings[i].edge);
-                    }
-                    smallest = smallest == 0.0 ? std::min(r1, r2) : std::min({smallest, r1, r2});
-                }
-                maker.Build();
-                if (!maker.IsDone()) {
-                    continue;
-                }
-                next = maker.Shape();
-            }
-            if (build.closed) {
-                next = singleSolid(next);
-            }
-            if (isValidPart(next, build.closed)) {
-                shape = next;
-                build.noteRadius(smallest);
-                return attempt;
-            }
-        } catch (const Standard_Failure&) {
-        } catch (const std::runtime_error&) {
+        const size_t count =
+            attempt < 2 ? roundings.size() : std::max<size_t>(1, roundings.size() >> (attempt - 1));
+        const std::vector<Rounding> some(roundings.begin(),
+                                         roundings.begin() + static_cast<long>(count));
+        if (roundOnce(build, shape, some, chamfer, attempt == 0 ? 1.0 : 0.5)) {
+            return attempt;
         }
     }
     return -1;
@@ -392,7 +455,8 @@ TopoDS_Shape roundRandomEdges(PartBuild& build, TopoDS_Shape shape, double cap)
         if (count == 0) {
             continue;
         }
-        const auto edges = pickEdges(draws, sharpEdges(shape, 2.0 * o.minRadius), count);
+        const auto edges =
+            pickEdges(draws, sharpEdges(shape, 2.0 * o.minRadius, o.minCreaseDegrees), count);
         std::vector<Rounding> roundings;
         for (const TopoDS_Edge& e : edges) {
             Rounding r;
@@ -1041,83 +1105,149 @@ TopoDS_Shape sheetMetal(PartBuild& b, double area)
 
 // ---- Freeform ------------------------------------------------------------------------------
 
-// A closed profile of B-spline arcs joined with equal tangents (curvature jumps at the joins),
-// extruded straight or lofted (ruled) to a scaled, shifted copy; optional hole down its axis.
-TopoDS_Shape freeform(PartBuild& b, double area)
+/// A closed wire of `pieces` B-spline arcs through `through` (per piece: its join point, then
+/// its inner points), each join with one tangent for both arcs.
+TopoDS_Wire tangentSplineLoop(const std::vector<std::vector<gp_Pnt>>& through)
 {
-    Draws& d = b.draws;
-    const double heightRatio = d.uniform("height_ratio", 0.15, 0.6);
-    const double L = d.note("size", sideForArea(area, 2.5 * heightRatio + 1.0));
-    const double H = d.note("height", heightRatio * L);
-    const int pieces = d.integer("pieces", 2, 5);
-    // Anchor points (the joins) and one or two through-points per piece on a star-shaped loop.
-    std::vector<std::vector<gp_Pnt>> through(static_cast<size_t>(pieces));
-    for (int i = 0; i < pieces; ++i) {
-        const int extra = d.integer("piece_points", 1, 3);
-        for (int k = 0; k <= extra; ++k) {
-            const double a = 2.0 * pi * (i + static_cast<double>(k) / (extra + 1)) / pieces;
-            const double r = 0.5 * L * d.uniform("radius_ratio", 0.6, 1.0);
-            through[static_cast<size_t>(i)].emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
-        }
-    }
+    const size_t pieces = through.size();
     std::vector<gp_Vec> tangent;
-    for (int i = 0; i < pieces; ++i) {
-        const auto& mine = through[static_cast<size_t>(i)];
-        const auto& before = through[static_cast<size_t>((i + pieces - 1) % pieces)];
-        tangent.emplace_back(before.back(), mine[1]);
+    for (size_t i = 0; i < pieces; ++i) {
+        tangent.emplace_back(through[(i + pieces - 1) % pieces].back(), through[i][1]);
     }
     BRepBuilderAPI_MakeWire wire;
-    for (int i = 0; i < pieces; ++i) {
-        const auto& mine = through[static_cast<size_t>(i)];
-        const int next = (i + 1) % pieces;
+    for (size_t i = 0; i < pieces; ++i) {
+        const auto& mine = through[i];
+        const size_t next = (i + 1) % pieces;
         Handle(TColgp_HArray1OfPnt) pts =
             new TColgp_HArray1OfPnt(1, static_cast<int>(mine.size()) + 1);
         for (size_t k = 0; k < mine.size(); ++k) {
             pts->SetValue(static_cast<int>(k) + 1, mine[k]);
         }
-        pts->SetValue(static_cast<int>(mine.size()) + 1, through[static_cast<size_t>(next)][0]);
+        pts->SetValue(static_cast<int>(mine.size()) + 1, through[next][0]);
         GeomAPI_Interpolate interpolate(pts, false, 1e-7);
-        interpolate.Load(tangent[static_cast<size_t>(i)], tangent[static_cast<size_t>(next)]);
+        interpolate.Load(tangent[i], tangent[next]);
         interpolate.Perform();
         require(interpolate.IsDone(), "B-spline profile");
         wire.Add(BRepBuilderAPI_MakeEdge(interpolate.Curve()).Edge());
     }
     require(wire.IsDone(), "freeform profile");
-    const TopoDS_Wire bottom = wire.Wire();
-    TopoDS_Shape s;
-    if (d.chance(0.5)) {
+    return wire.Wire();
+}
+
+struct FreeformDraws
+{
+    double height = 0.0;
+    /// Per piece, the polar angles and radii of its join point and inner points.
+    std::vector<std::vector<double>> angles;
+    std::vector<std::vector<double>> radii;
+    bool lofted = false;
+    double topScale = 1.0;
+    gp_Vec topShift;
+};
+
+/// The body of the freeform part, its radii pulled towards their mean by `flatten` (0: as
+/// drawn, 1: all equal) and lofted or not.
+TopoDS_Shape freeformBody(const FreeformDraws& f, double flatten, bool lofted)
+{
+    double mean = 0.0;
+    int count = 0;
+    for (const auto& piece : f.radii) {
+        for (double r : piece) {
+            mean += r;
+            ++count;
+        }
+    }
+    mean /= count;
+    std::vector<std::vector<gp_Pnt>> through(f.radii.size());
+    for (size_t i = 0; i < f.radii.size(); ++i) {
+        for (size_t k = 0; k < f.radii[i].size(); ++k) {
+            const double r = mean + (1.0 - flatten) * (f.radii[i][k] - mean);
+            const double a = f.angles[i][k];
+            through[i].emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
+        }
+    }
+    const TopoDS_Wire bottom = tangentSplineLoop(through);
+    // A straight extrusion is the ruled loft to a shifted copy as well: OpenCASCADE's fillets
+    // fail on the edges of its surfaces of linear extrusion, not on the loft's B-splines.
+    gp_Trsf scaling;
+    scaling.SetScale(gp::Origin(), lofted ? f.topScale : 1.0);
+    gp_Trsf shift;
+    shift.SetTranslation(lofted ? f.topShift : gp_Vec(0.0, 0.0, f.height));
+    const TopoDS_Wire top =
+        TopoDS::Wire(BRepBuilderAPI_Transform(bottom, shift * scaling, true).Shape());
+    // Ruled between homothetic sections: the joins stay tangent along their whole height.
+    BRepOffsetAPI_ThruSections loft(true, true);
+    loft.AddWire(bottom);
+    loft.AddWire(top);
+    loft.CheckCompatibility(false);
+    loft.Build();
+    require(loft.IsDone(), "loft");
+    const TopoDS_Shape s = singleSolid(loft.Shape());
+    require(isValidPart(s, true), "freeform body");
+    return s;
+}
+
+// A closed profile of B-spline arcs joined with equal tangents (curvature jumps at the joins)
+// on a star-shaped loop, extruded straight or lofted (ruled) to a scaled, shifted copy; an
+// optional hole down its axis. A profile OpenCASCADE cannot make a valid body of is tried
+// again extruded, then with its radii pulled halfway and fully to their mean.
+TopoDS_Shape freeform(PartBuild& b, double area)
+{
+    Draws& d = b.draws;
+    FreeformDraws f;
+    const double heightRatio = d.uniform("height_ratio", 0.15, 0.6);
+    const double L = d.note("size", sideForArea(area, 2.5 * heightRatio + 1.0));
+    f.height = d.note("height", heightRatio * L);
+    const int pieces = d.integer("pieces", 2, 5);
+    for (int i = 0; i < pieces; ++i) {
+        const int extra = d.integer("piece_points", 1, 3);
+        f.angles.emplace_back();
+        f.radii.emplace_back();
+        for (int k = 0; k <= extra; ++k) {
+            f.angles.back().push_back(2.0 * pi * (i + static_cast<double>(k) / (extra + 1)) /
+                                      pieces);
+            f.radii.back().push_back(0.5 * L * d.uniform("radius_ratio", 0.6, 1.0));
+        }
+    }
+    f.lofted = d.chance(0.5);
+    if (f.lofted) {
         d.note("lofted", 1.0);
-        const double scale = d.uniform("top_scale", 0.5, 1.3);
-        gp_Trsf scaling;
-        scaling.SetScale(gp::Origin(), scale);
-        gp_Trsf shift;
+        f.topScale = d.uniform("top_scale", 0.5, 1.3);
         // One draw per statement: the order of a call's arguments is unspecified.
         const double shiftX = d.uniform("top_shift_x", -0.05 * L, 0.05 * L);
         const double shiftY = d.uniform("top_shift_y", -0.05 * L, 0.05 * L);
-        shift.SetTranslation(gp_Vec(shiftX, shiftY, H));
-        const TopoDS_Wire top =
-            TopoDS::Wire(BRepBuilderAPI_Transform(bottom, shift * scaling, true).Shape());
-        // Ruled between homothetic sections: the joins stay tangent along their whole height.
-        BRepOffsetAPI_ThruSections loft(true, true);
-        loft.AddWire(bottom);
-        loft.AddWire(top);
-        loft.CheckCompatibility(false);
-        loft.Build();
-        require(loft.IsDone(), "loft");
-        s = singleSolid(loft.Shape());
-    } else {
-        BRepBuilderAPI_MakeFace face(bottom, true);
-        require(face.IsDone(), "freeform face");
-        s = singleSolid(prism(face.Face(), gp_Vec(0, 0, H)));
+        f.topShift = gp_Vec(shiftX, shiftY, f.height);
     }
-    require(isValidPart(s, true), "freeform body");
+    TopoDS_Shape s;
+    const struct
+    {
+        double flatten;
+        bool lofted;
+    } tries[] = {{0.0, f.lofted}, {0.0, false}, {0.5, false}, {1.0, false}};
+    for (const auto& attempt : tries) {
+        if (&attempt == &tries[1] && !f.lofted) {
+            continue; // the drawn extrusion was the first try
+        }
+        try {
+            s = freeformBody(f, attempt.flatten, attempt.lofted);
+            break;
+        } catch (const Standard_Failure&) {
+        } catch (const std::runtime_error&) {
+        }
+        b.failed(std::string(attempt.lofted ? "loft" : "extrusion") + " of the profile" +
+                 (attempt.flatten == 0.0   ? ""
+                  : attempt.flatten == 1.0 ? " with equal radii"
+                                           : " with radii halfway to equal") +
+                 " failed");
+    }
+    require(!s.IsNull(), "freeform body");
     if (d.chance(0.5)) {
         const double r = d.uniform("hole_radius", 2.0, std::max(2.0, 0.05 * L));
         tryStep(b, s, "hole", [&](const TopoDS_Shape& p) {
-            return cut(p, cylinder(gp_Pnt(0, 0, -1.0), gp::DZ(), r, H + 2.0));
+            return cut(p, cylinder(gp_Pnt(0, 0, -1.0), gp::DZ(), r, f.height + 2.0));
         });
     }
-    return roundRandomEdges(b, s, 0.3 * H);
+    return roundRandomEdges(b, s, 0.3 * f.height);
 }
 
 std::string formatParameters(const std::vector<DrawnValue>& values)
@@ -1137,8 +1267,8 @@ void checkOptions(const RandomPartOptions& o)
         return lo > 0.0 && std::isfinite(hi) && lo <= hi;
     };
     if (!(o.points >= 0.0) || !positiveRange(o.minPoints, o.maxPoints) ||
-        !(o.pointsPerSquareSpacing > 0.0) || !positiveRange(o.minRadius, o.maxRadius) ||
-        o.maxRoundedEdges < 1 || o.roundingTries < 1 ||
+        !(o.pointsPerSquareSpacing > 0.0) || !(o.minCreaseDegrees >= 0.0) ||
+        !positiveRange(o.minRadius, o.maxRadius) || o.maxRoundedEdges < 1 || o.roundingTries < 1 ||
         !positiveRange(o.minDihedralDegrees, o.maxDihedralDegrees) ||
         !(o.maxDihedralDegrees < 180.0) || !positiveRange(o.minWall, o.maxWall) ||
         !positiveRange(o.minRibGap, o.maxRibGap) || !(o.chamferShare >= 0.0) ||

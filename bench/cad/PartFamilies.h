@@ -49,6 +49,9 @@ struct RandomPartOptions
     /// Edges rounded or chamfered per part: between 1 and this many, picked at random among
     /// the sharp edges.
     int maxRoundedEdges = 6;
+    /// Only edges whose faces' normals differ by at least this (degrees) are picked: tangent
+    /// joins (fillet borders, the freeform's B-spline joins) cannot be rounded.
+    double minCreaseDegrees = 5.0;
     /// Probability that a picked edge is chamfered rather than filleted.
     double chamferShare = 0.3;
     /// Probability that a fillet's radius varies linearly along its edge.
