@@ -23,6 +23,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLProp_SLProps.hxx>
+#include <BRepOffsetAPI_DraftAngle.hxx>
 #include <BRepOffsetAPI_MakeThickSolid.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -51,6 +52,7 @@
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Pnt2d.hxx>
 #include <gp_Trsf.hxx>
 
@@ -891,6 +893,26 @@ TopoDS_Shape thinShell(PartBuild& b, double area)
     const double H = d.note("height", heightRatio * W);
     const double t = d.uniform("wall", o.minWall, o.maxWall);
     TopoDS_Shape s = box(0, 0, 0, W, D, H);
+    // The side walls lean out by a draft: the dihedral between the bottom and a wall, inside
+    // the material, is 90 degrees plus the draft.
+    const double draft = radians(b.dihedral("wall_dihedral", 90.0, 120.0) - 90.0);
+    if (draft > 0.0) {
+        tryStep(b, s, "draft", [&](const TopoDS_Shape& p) {
+            BRepOffsetAPI_DraftAngle maker(p);
+            for (TopExp_Explorer f(p, TopAbs_FACE); f.More(); f.Next()) {
+                const TopoDS_Face& face = TopoDS::Face(f.Current());
+                const BRepAdaptor_Surface surface(face);
+                if (surface.GetType() == GeomAbs_Plane &&
+                    surface.Plane().Axis().Direction().IsNormal(gp::DZ(), 1e-9)) {
+                    maker.Add(face, gp::DZ(), -draft, gp_Pln(gp::Origin(), gp::DZ()));
+                    require(maker.AddDone(), "draft of a wall");
+                }
+            }
+            maker.Build();
+            require(maker.IsDone(), "draft");
+            return maker.Shape();
+        });
+    }
     const auto edgesAlong = [](const TopoDS_Shape& shape,
                                const std::function<bool(const gp_Pnt&, const gp_Pnt&)>& keep) {
         std::vector<TopoDS_Edge> result;
@@ -913,7 +935,7 @@ TopoDS_Shape thinShell(PartBuild& b, double area)
         const bool made = tryStep(b, s, "corner fillets", [&](const TopoDS_Shape& p) {
             BRepFilletAPI_MakeFillet maker(p);
             for (const TopoDS_Edge& e : edgesAlong(p, [](const gp_Pnt&a, const gp_Pnt&c) {
-                     return std::abs(a.X() - c.X()) < 1e-9 && std::abs(a.Y() - c.Y()) < 1e-9;
+                     return std::abs(a.Z() - c.Z()) > 1e-6; // the corner edges
                  })) {
                 maker.Add(rc, e);
             }
@@ -967,8 +989,11 @@ TopoDS_Shape thinShell(PartBuild& b, double area)
         const double u = d.uniform("hole_u", 0.3 * span, 0.7 * span);
         const double v = d.uniform("hole_z", 0.35 * H, 0.75 * H);
         tryStep(b, s, "wall hole", [&](const TopoDS_Shape& p) {
-            const gp_Pnt base = front ? gp_Pnt(u, -1.0, v) : gp_Pnt(-1.0, u, v);
-            return cut(p, cylinder(base, front ? gp::DY() : gp::DX(), r, t + 2.0));
+            // From outside the leaning wall to just inside it.
+            const double out = H * std::tan(draft) + 1.0;
+            const gp_Pnt base = front ? gp_Pnt(u, -out, v) : gp_Pnt(-out, u, v);
+            return cut(
+                p, cylinder(base, front ? gp::DY() : gp::DX(), r, out + t / std::cos(draft) + 1.0));
         });
     }
     return roundRandomEdges(b, s, std::max(o.minRadius, t));
@@ -1099,6 +1124,51 @@ TopoDS_Shape sheetMetal(PartBuild& b, double area)
             const gp_Pnt base(centre.x - n.x, y, centre.y - n.y);
             return cut(p, cylinder(base, gp_Dir(n.x, 0.0, n.y), r, 2.0));
         });
+    }
+    // The free ends' four corners: rounded or chamfered in the sheet's plane, or left square.
+    for (const bool last : {false, true}) {
+        const size_t f = last ? static_cast<size_t>(flanges) - 1 : 0;
+        const Point2 end = last ? corner.back() : corner.front();
+        const Point2 dir = unitOf((last ? corner[f] : corner[1]) - end); // into the flange
+        const double flat = norm(corner[f + 1] - corner[f]) - tangentLength[f] -
+                            (f + 1 < static_cast<size_t>(flanges) ? tangentLength[f + 1] : 0.0);
+        const double cap = std::min({o.maxRadius, 0.4 * flat, 0.4 * D});
+        for (const bool far : {false, true}) {
+            const int kind = d.integer("end_corner_kind", 0, 2); // square, rounded, chamfered
+            if (kind == 0 || cap < o.minRadius) {
+                continue;
+            }
+            const double size = b.radius(kind == 1 ? "corner_radius" : "chamfer_distance", cap);
+            // (s, v): s along the flange from its end, v across from the corner's side.
+            const auto at = [&](double s, double v) {
+                const Point2 p = end + s * dir;
+                return gp_Pnt(p.x, far ? D - v : v, p.y);
+            };
+            const Point2 n = leftNormal(dir);
+            const gp_Vec across(2.0 * n.x, 0.0, 2.0 * n.y);
+            const gp_Vec back(-n.x, 0.0, -n.y);
+            const auto lifted = [&](gp_Pnt p) { return p.Translated(back); };
+            const bool made = tryStep(b, s, "end corner", [&](const TopoDS_Shape& p) {
+                TopoDS_Shape tool;
+                if (kind == 1) {
+                    // The square beyond the quarter circle of radius `size` at the corner.
+                    tool = prism(polygonFace({lifted(at(-1.0, -1.0)), lifted(at(size, -1.0)),
+                                              lifted(at(size, size)), lifted(at(-1.0, size))}),
+                                 across);
+                    tool = cut(tool, cylinder(lifted(at(size, size)), gp_Dir(across), size,
+                                              across.Magnitude()));
+                } else {
+                    // The triangle beyond the line from (size, 0) to (0, size).
+                    tool = prism(polygonFace({lifted(at(-1.0, -1.0)), lifted(at(size + 1.0, -1.0)),
+                                              lifted(at(-1.0, size + 1.0))}),
+                                 across);
+                }
+                return cut(p, tool);
+            });
+            if (made && kind == 1) {
+                b.noteRadius(size);
+            }
+        }
     }
     return s;
 }
