@@ -1337,8 +1337,9 @@ void checkOptions(const RandomPartOptions& o)
         return lo > 0.0 && std::isfinite(hi) && lo <= hi;
     };
     if (!(o.points >= 0.0) || !positiveRange(o.minPoints, o.maxPoints) ||
-        !(o.pointsPerSquareSpacing > 0.0) || !(o.minCreaseDegrees >= 0.0) ||
-        !positiveRange(o.minRadius, o.maxRadius) || o.maxRoundedEdges < 1 || o.roundingTries < 1 ||
+        !(o.pointsPerSquareSpacing > 0.0) || !(o.radiusPerSpacing > 0.0) ||
+        !(o.minCreaseDegrees >= 0.0) || !positiveRange(o.minRadius, o.maxRadius) ||
+        o.maxRoundedEdges < 1 || o.roundingTries < 1 ||
         !positiveRange(o.minDihedralDegrees, o.maxDihedralDegrees) ||
         !(o.maxDihedralDegrees < 180.0) || !positiveRange(o.minWall, o.maxWall) ||
         !positiveRange(o.minRibGap, o.maxRibGap) || !(o.chamferShare >= 0.0) ||
@@ -1409,6 +1410,7 @@ RandomPart makeRandomPart(std::uint32_t seed, const RandomPartOptions& options)
         throw std::runtime_error("Random part " + std::to_string(seed) + " (" + part.familyName +
                                  "): the plain body is not a valid shape.");
     }
+    part.samplingRadius = part.spacing * options.radiusPerSpacing;
     part.closed = build.closed;
     part.smallestRadius = build.smallestRadius;
     part.fallbacks = build.fallbacks;

@@ -39,9 +39,12 @@ struct RandomPartOptions
     double points = 0.0;
     double minPoints = 1e4;
     double maxPoints = 1e6;
-    /// Samples per spacing squared that the part's area is sized for: the Poisson-disk
-    /// sampler's 0.57 / r^2 at r = 1 / 1.2 (ShapeSampling.h), whose mean spacing is about 1.
-    double pointsPerSquareSpacing = 0.82;
+    /// Poisson-disk radius (ShapeSampling.h) per intended spacing: the sampler's mean spacing
+    /// comes out 1.12 r on these parts, so r = 0.89 gives spacing 1.
+    double radiusPerSpacing = 0.89;
+    /// Samples per square spacing the part's area is sized for: the sampler's 0.57 / r^2 at
+    /// r = radiusPerSpacing.
+    double pointsPerSquareSpacing = 0.72;
     /// Fillet radii, chamfer distances and sheet-metal bend radii (spacings), drawn
     /// log-uniformly in [min, max], the max lowered where the family's features are smaller.
     double minRadius = 1.0;
@@ -94,6 +97,9 @@ struct RandomPart
     double smallestRadius = 0.0;
     /// The mean point spacing the part is sized for (model units): 1.
     double spacing = 1.0;
+    /// The Poisson-disk radius that samples the part at that spacing (spacing times
+    /// options.radiusPerSpacing).
+    double samplingRadius = 0.89;
     /// The point count the part's area was sized for.
     double targetPoints = 0.0;
     /// Steps that failed and were left out (a feature, a rounding), empty when none.

@@ -113,6 +113,7 @@ TEST(PartFamilies, SeedsZeroToFifteenAreValidPartsOfEveryFamily)
         EXPECT_EQ(countOf(part.shape, TopAbs_SOLID), part.closed ? 1 : 0);
         EXPECT_GT(volumeOrArea(part), 0.0);
         EXPECT_DOUBLE_EQ(part.spacing, 1.0);
+        EXPECT_DOUBLE_EQ(part.samplingRadius, 0.89);
         EXPECT_GE(part.targetPoints, 1e4);
         EXPECT_LE(part.targetPoints, 1e6);
         if (part.smallestRadius > 0.0) {
@@ -123,9 +124,9 @@ TEST(PartFamilies, SeedsZeroToFifteenAreValidPartsOfEveryFamily)
             EXPECT_LE(v.value, v.hi) << v.name;
             expectIssueRange(v);
         }
-        // The area is sized for the point count at spacing 1 (0.82 samples per square
+        // The area is sized for the point count at spacing 1 (0.72 samples per square
         // spacing); features and the sizing's rough area formulas keep it within a factor 2.
-        const double expected = 0.82 * shapeArea(part.shape);
+        const double expected = 0.72 * shapeArea(part.shape);
         EXPECT_GT(expected, 0.5 * part.targetPoints);
         EXPECT_LT(expected, 2.0 * part.targetPoints);
         // Typed truth: boundaries exactly on the open part, sharp edges on every part.
@@ -186,13 +187,13 @@ TEST(PartFamilies, TruthAsDetectorScoresOneOnEveryFamily)
         const RandomPart part = makeRandomPart(seed, options);
         SCOPED_TRACE("seed " + std::to_string(seed) + " " + part.familyName);
         SamplingOptions sampling;
-        sampling.radius = part.spacing / 1.2;
+        sampling.radius = part.samplingRadius;
         sampling.seed = seed;
         const SampledCloud cloud = sampleShape(part.shape, sampling);
         const double spacing = meanNearestSpacing(cloud.points);
-        // Built in spacings: the sampler at r = 1 / 1.2 gives a spacing near 1 and about the
+        // Built in spacings: the sampler at the part's radius gives spacing 1 and about the
         // target point count.
-        EXPECT_NEAR(spacing, 1.0, 0.2);
+        EXPECT_NEAR(spacing, 1.0, 0.05);
         EXPECT_GT(cloud.points.rows(), 0.5 * options.points);
         EXPECT_LT(cloud.points.rows(), 2.0 * options.points);
         TruthOptions truthOptions;
