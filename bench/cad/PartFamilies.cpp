@@ -879,8 +879,86 @@ TopoDS_Shape revolved(PartBuild& b, double area)
 
 // ---- Thin shell ----------------------------------------------------------------------------
 
-// A box with rounded vertical corners and bottom rim, hollowed to a drawn wall thickness with
-// its top open, holes through two walls.
+/// The edges of `shape` whose two ends satisfy `keep`.
+std::vector<TopoDS_Edge> edgesWhere(const TopoDS_Shape& shape,
+                                    const std::function<bool(const gp_Pnt&, const gp_Pnt&)>& keep)
+{
+    std::vector<TopoDS_Edge> result;
+    TopTools_IndexedMapOfShape edges;
+    TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+    for (int i = 1; i <= edges.Extent(); ++i) {
+        const TopoDS_Edge& e = TopoDS::Edge(edges(i));
+        const BRepAdaptor_Curve c(e);
+        if (keep(c.Value(c.FirstParameter()), c.Value(c.LastParameter()))) {
+            result.push_back(e);
+        }
+    }
+    return result;
+}
+
+/// The planar faces of `shape` whose normal is perpendicular to z (`sides`) or along z at
+/// height `z` (not `sides`).
+TopTools_ListOfShape planarFaces(const TopoDS_Shape& shape, bool sides, double z)
+{
+    TopTools_ListOfShape faces;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        const BRepAdaptor_Surface surface(TopoDS::Face(f.Current()));
+        if (surface.GetType() != GeomAbs_Plane) {
+            continue;
+        }
+        const gp_Dir normal = surface.Plane().Axis().Direction();
+        if (sides ? normal.IsNormal(gp::DZ(), 1e-9)
+                  : normal.IsParallel(gp::DZ(), 1e-9) &&
+                        std::abs(surface.Plane().Location().Z() - z) < 1e-6) {
+            faces.Append(f.Current());
+        }
+    }
+    return faces;
+}
+
+/// Fillets `edges` of `shape` at `radius`, throwing when OpenCASCADE cannot.
+TopoDS_Shape filleted(const TopoDS_Shape& shape, const std::vector<TopoDS_Edge>& edges,
+                      double radius)
+{
+    BRepFilletAPI_MakeFillet maker(shape);
+    for (const TopoDS_Edge& e : edges) {
+        maker.Add(radius, e);
+    }
+    maker.Build();
+    require(maker.IsDone(), "fillets");
+    return maker.Shape();
+}
+
+/// The side faces of `box` leaning out by `draft` (radians) about the bottom.
+TopoDS_Shape drafted(const TopoDS_Shape& box, double draft)
+{
+    BRepOffsetAPI_DraftAngle maker(box);
+    const TopTools_ListOfShape sides = planarFaces(box, true, 0.0);
+    for (TopTools_ListIteratorOfListOfShape f(sides); f.More(); f.Next()) {
+        maker.Add(TopoDS::Face(f.Value()), gp::DZ(), -draft, gp_Pln(gp::Origin(), gp::DZ()));
+        require(maker.AddDone(), "draft of a wall");
+    }
+    maker.Build();
+    require(maker.IsDone(), "draft");
+    return maker.Shape();
+}
+
+/// `solid` hollowed to walls `t` thick, its top face (at height `top`) removed.
+TopoDS_Shape hollowed(const TopoDS_Shape& solid, double top, double t)
+{
+    const TopTools_ListOfShape open = planarFaces(solid, false, top);
+    require(open.Extent() == 1, "top face of the shell");
+    BRepOffsetAPI_MakeThickSolid thick;
+    thick.MakeThickSolidByJoin(solid, open, -t, 1e-4, BRepOffset_Skin, false, false, GeomAbs_Arc);
+    thick.Build();
+    require(thick.IsDone(), "hollowing");
+    const TopoDS_Shape s = singleSolid(thick.Shape());
+    require(isValidPart(s, true), "hollowed shell");
+    return s;
+}
+
+// A tray: a box whose side walls lean out by a draft, rounded corners and bottom rim, hollowed
+// to a drawn wall thickness with its top open, holes through two walls.
 TopoDS_Shape thinShell(PartBuild& b, double area)
 {
     Draws& d = b.draws;
@@ -893,95 +971,39 @@ TopoDS_Shape thinShell(PartBuild& b, double area)
     const double H = d.note("height", heightRatio * W);
     const double t = d.uniform("wall", o.minWall, o.maxWall);
     TopoDS_Shape s = box(0, 0, 0, W, D, H);
-    // The side walls lean out by a draft: the dihedral between the bottom and a wall, inside
-    // the material, is 90 degrees plus the draft.
+    // The dihedral between the bottom and a wall, inside the material, is 90 degrees plus the
+    // draft.
     const double draft = radians(b.dihedral("wall_dihedral", 90.0, 120.0) - 90.0);
     if (draft > 0.0) {
-        tryStep(b, s, "draft", [&](const TopoDS_Shape& p) {
-            BRepOffsetAPI_DraftAngle maker(p);
-            for (TopExp_Explorer f(p, TopAbs_FACE); f.More(); f.Next()) {
-                const TopoDS_Face& face = TopoDS::Face(f.Current());
-                const BRepAdaptor_Surface surface(face);
-                if (surface.GetType() == GeomAbs_Plane &&
-                    surface.Plane().Axis().Direction().IsNormal(gp::DZ(), 1e-9)) {
-                    maker.Add(face, gp::DZ(), -draft, gp_Pln(gp::Origin(), gp::DZ()));
-                    require(maker.AddDone(), "draft of a wall");
-                }
-            }
-            maker.Build();
-            require(maker.IsDone(), "draft");
-            return maker.Shape();
-        });
+        tryStep(b, s, "draft", [&](const TopoDS_Shape& p) { return drafted(p, draft); });
     }
-    const auto edgesAlong = [](const TopoDS_Shape& shape,
-                               const std::function<bool(const gp_Pnt&, const gp_Pnt&)>& keep) {
-        std::vector<TopoDS_Edge> result;
-        TopTools_IndexedMapOfShape edges;
-        TopExp::MapShapes(shape, TopAbs_EDGE, edges);
-        for (int i = 1; i <= edges.Extent(); ++i) {
-            const TopoDS_Edge& e = TopoDS::Edge(edges(i));
-            const BRepAdaptor_Curve c(e);
-            if (keep(c.Value(c.FirstParameter()), c.Value(c.LastParameter()))) {
-                result.push_back(e);
-            }
-        }
-        return result;
-    };
     // The inner surface's radius is the outer one less the wall: both at least minRadius.
     const double cornerCap = std::min(o.maxRadius, 0.2 * std::min(W, D));
     if (d.chance(0.7)) {
         const double rc =
             d.logUniform("corner_radius", t + o.minRadius, std::max(t + o.minRadius, cornerCap));
-        const bool made = tryStep(b, s, "corner fillets", [&](const TopoDS_Shape& p) {
-            BRepFilletAPI_MakeFillet maker(p);
-            for (const TopoDS_Edge& e : edgesAlong(p, [](const gp_Pnt&a, const gp_Pnt&c) {
-                     return std::abs(a.Z() - c.Z()) > 1e-6; // the corner edges
-                 })) {
-                maker.Add(rc, e);
-            }
-            maker.Build();
-            require(maker.IsDone(), "corner fillets");
-            return maker.Shape();
-        });
-        if (made) {
+        const auto corners = [](const gp_Pnt& a, const gp_Pnt& c) {
+            return std::abs(a.Z() - c.Z()) > 1e-6;
+        };
+        if (tryStep(b, s, "corner fillets", [&](const TopoDS_Shape& p) {
+                return filleted(p, edgesWhere(p, corners), rc);
+            })) {
             b.noteRadius(rc - t);
         }
     }
     if (d.chance(0.5)) {
         const double rb = d.logUniform("bottom_radius", t + o.minRadius,
                                        std::max(t + o.minRadius, std::min(cornerCap, 0.5 * H)));
-        const bool made = tryStep(b, s, "bottom fillets", [&](const TopoDS_Shape& p) {
-            BRepFilletAPI_MakeFillet maker(p);
-            for (const TopoDS_Edge& e : edgesAlong(p, [](const gp_Pnt&a, const gp_Pnt&c) {
-                     return std::abs(a.Z()) < 1e-9 && std::abs(c.Z()) < 1e-9;
-                 })) {
-                maker.Add(rb, e);
-            }
-            maker.Build();
-            require(maker.IsDone(), "bottom fillets");
-            return maker.Shape();
-        });
-        if (made) {
+        const auto bottom = [](const gp_Pnt& a, const gp_Pnt& c) {
+            return std::abs(a.Z()) < 1e-9 && std::abs(c.Z()) < 1e-9;
+        };
+        if (tryStep(b, s, "bottom fillets", [&](const TopoDS_Shape& p) {
+                return filleted(p, edgesWhere(p, bottom), rb);
+            })) {
             b.noteRadius(rb - t);
         }
     }
-    TopTools_ListOfShape open;
-    for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
-        const BRepAdaptor_Surface surface(TopoDS::Face(f.Current()));
-        if (surface.GetType() == GeomAbs_Plane &&
-            surface.Plane().Axis().Direction().IsParallel(gp::DZ(), 1e-9) &&
-            std::abs(surface.Plane().Location().Z() - H) < 1e-6) {
-            open.Append(f.Current());
-        }
-    }
-    require(open.Extent() == 1, "top face of the shell");
-    BRepOffsetAPI_MakeThickSolid thick;
-    thick.MakeThickSolidByJoin(s, open, -t, 1e-4, BRepOffset_Skin, false, false, GeomAbs_Arc);
-    thick.Build();
-    require(thick.IsDone(), "hollowing");
-    s = singleSolid(thick.Shape());
-    require(isValidPart(s, true), "hollowed shell");
-
+    s = hollowed(s, H, t);
     for (int i = d.integer("wall_holes", 0, 3); i > 0; --i) {
         const bool front = d.chance(0.5);
         const double span = front ? W : D;
@@ -1020,30 +1042,35 @@ double segmentDistance(Point2 a, Point2 b, Point2 c, Point2 e)
                      pointSegment(e, a, b)});
 }
 
-// An open shell: flat flanges joined by bends of drawn angle and radius (a zero radius is a
-// sharp fold), holes punched through the flanges.
-TopoDS_Shape sheetMetal(PartBuild& b, double area)
+/// The sheet's cross-section in the XZ plane: the centre polyline's corners and, at each
+/// corner, the length the bend's arc takes from both flanges (0 at the ends and sharp folds).
+struct SheetProfile
+{
+    std::vector<Point2> corner;
+    std::vector<double> tangentLength;
+
+    size_t flanges() const { return corner.size() - 1; }
+    /// Length of flange f's flat part, between its bends.
+    double flat(size_t f) const
+    {
+        return norm(corner[f + 1] - corner[f]) - tangentLength[f] - tangentLength[f + 1];
+    }
+};
+
+/// Flanges of the drawn lengths; each bend turns by 180 - its dihedral, left or right; a turn
+/// that would bring the sheet within 4 spacings of itself turns the other way, then square.
+/// A bend's radius fits where its arc takes at most 0.4 of the shorter flange, else the fold
+/// is sharp (so is a fifth of them).
+SheetProfile drawSheetProfile(PartBuild& b, const std::vector<double>& lengths)
 {
     Draws& d = b.draws;
-    const RandomPartOptions& o = b.options;
-    b.closed = false;
-    const int flanges = d.integer("flanges", 2, 5);
-    const double widthRatio = d.uniform("width_ratio", 0.3, 1.0);
-    std::vector<double> ratio;
-    double sum = 0.0;
-    for (int i = 0; i < flanges; ++i) {
-        ratio.push_back(d.uniform("flange_ratio", 0.3, 1.0));
-        sum += ratio.back();
-    }
-    const double L = d.note("scale", sideForArea(area, widthRatio * sum));
-    const double D = d.note("width", widthRatio * L);
-    // The centre polyline: each bend turns by 180 - its dihedral, left or right; a turn that
-    // would bring the sheet within 4 spacings of itself turns the other way, then square.
-    std::vector<Point2> corner{{0.0, 0.0}};
-    std::vector<double> turn;
+    SheetProfile profile;
+    profile.corner.push_back({0.0, 0.0});
+    std::vector<double> turn{0.0};
     double heading = 0.0;
-    for (int i = 0; i < flanges; ++i) {
-        const double len = ratio[static_cast<size_t>(i)] * L;
+    for (size_t i = 0; i < lengths.size(); ++i) {
+        const double len = lengths[i];
+        const std::vector<Point2>& corner = profile.corner;
         if (i > 0) {
             const double dihedral = b.dihedral("bend_dihedral", 10.0, 170.0);
             double signedTurn = (d.chance(0.5) ? 1.0 : -1.0) * (180.0 - dihedral);
@@ -1067,38 +1094,38 @@ TopoDS_Shape sheetMetal(PartBuild& b, double area)
             turn.push_back(signedTurn);
             heading += radians(signedTurn);
         }
-        corner.push_back(corner.back() + len * Point2{std::cos(heading), std::sin(heading)});
+        profile.corner.push_back(corner.back() +
+                                 len * Point2{std::cos(heading), std::sin(heading)});
     }
-    // Bends: the radius fits in the shorter flange's half, else the fold is sharp.
-    std::vector<double> tangentLength(static_cast<size_t>(flanges), 0.0);
-    std::vector<double> bendRadius;
-    for (int i = 1; i < flanges; ++i) {
-        const double halfTurn = 0.5 * radians(std::abs(turn[static_cast<size_t>(i) - 1]));
-        const double flange =
-            std::min(ratio[static_cast<size_t>(i) - 1], ratio[static_cast<size_t>(i)]) * L;
-        const double fit = 0.4 * flange / std::tan(halfTurn);
-        double r = 0.0;
-        if (fit >= o.minRadius && !d.chance(0.2)) {
-            r = b.radius("bend_radius", fit);
+    turn.push_back(0.0);
+    profile.tangentLength.assign(profile.corner.size(), 0.0);
+    for (size_t i = 1; i + 1 < profile.corner.size(); ++i) {
+        const double halfTurn = 0.5 * radians(std::abs(turn[i]));
+        const double fit = 0.4 * std::min(lengths[i - 1], lengths[i]) / std::tan(halfTurn);
+        if (fit >= b.options.minRadius && !d.chance(0.2)) {
+            const double r = b.radius("bend_radius", fit);
             b.noteRadius(r);
+            profile.tangentLength[i] = r * std::tan(halfTurn);
         }
-        bendRadius.push_back(r);
-        tangentLength[static_cast<size_t>(i)] = r * std::tan(halfTurn);
     }
+    return profile;
+}
+
+/// The profile as a wire of lines and tangent arcs in the XZ plane.
+TopoDS_Wire sheetWire(const SheetProfile& profile)
+{
     BRepBuilderAPI_MakeWire wire;
     const auto at = [](Point2 p) { return gp_Pnt(p.x, 0.0, p.y); };
+    const std::vector<Point2>& corner = profile.corner;
     Point2 from = corner[0];
-    for (int i = 0; i < flanges; ++i) {
-        const Point2 a = corner[static_cast<size_t>(i)];
-        const Point2 c = corner[static_cast<size_t>(i) + 1];
-        const Point2 dir = unitOf(c - a);
-        const double trim = i + 1 < flanges ? tangentLength[static_cast<size_t>(i) + 1] : 0.0;
-        const Point2 to = c - trim * dir;
+    for (size_t i = 0; i < profile.flanges(); ++i) {
+        const Point2 dir = unitOf(corner[i + 1] - corner[i]);
+        const double trim = profile.tangentLength[i + 1];
+        const Point2 to = corner[i + 1] - trim * dir;
         wire.Add(BRepBuilderAPI_MakeEdge(at(from), at(to)).Edge());
         from = to;
         if (trim > 0.0) {
-            const Point2 next = unitOf(corner[static_cast<size_t>(i) + 2] - c);
-            const Point2 after = c + trim * next;
+            const Point2 after = corner[i + 1] + trim * unitOf(corner[i + 2] - corner[i + 1]);
             GC_MakeArcOfCircle arc(at(to), gp_Vec(dir.x, 0.0, dir.y), at(after));
             require(arc.IsDone(), "bend arc");
             wire.Add(BRepBuilderAPI_MakeEdge(arc.Value()).Edge());
@@ -1106,70 +1133,98 @@ TopoDS_Shape sheetMetal(PartBuild& b, double area)
         }
     }
     require(wire.IsDone(), "sheet profile");
-    TopoDS_Shape s = prism(wire.Wire(), gp_Vec(0, D, 0));
-    require(isValidPart(s, false), "sheet");
+    return wire.Wire();
+}
+
+/// Round holes through the flat parts of random flanges of a sheet `width` wide.
+void punchHoles(PartBuild& b, TopoDS_Shape& sheet, const SheetProfile& profile, double width)
+{
+    Draws& d = b.draws;
     for (int i = d.integer("holes", 0, 3); i > 0; --i) {
-        const int f = d.integer("hole_flange", 0, flanges - 1);
-        const Point2 a = corner[static_cast<size_t>(f)];
-        const Point2 c = corner[static_cast<size_t>(f) + 1];
-        const double flat = norm(c - a) - tangentLength[static_cast<size_t>(f)] -
-                            (f + 1 < flanges ? tangentLength[static_cast<size_t>(f) + 1] : 0.0);
-        const double r = d.uniform("hole_radius", 2.0, std::max(2.0, 0.15 * std::min(flat, D)));
-        const double s01 = d.uniform("hole_along", 0.3, 0.7);
-        const double y = d.uniform("hole_y", 0.25 * D, 0.75 * D);
-        const Point2 dir = unitOf(c - a);
-        const Point2 centre = a + (tangentLength[static_cast<size_t>(f)] + s01 * flat) * dir;
+        const size_t f = static_cast<size_t>(
+            d.integer("hole_flange", 0, static_cast<int>(profile.flanges()) - 1));
+        const double flat = profile.flat(f);
+        const double r = d.uniform("hole_radius", 2.0, std::max(2.0, 0.15 * std::min(flat, width)));
+        const double along = d.uniform("hole_along", 0.3, 0.7);
+        const double y = d.uniform("hole_y", 0.25 * width, 0.75 * width);
+        const Point2 dir = unitOf(profile.corner[f + 1] - profile.corner[f]);
+        const Point2 centre = profile.corner[f] + (profile.tangentLength[f] + along * flat) * dir;
         const Point2 n = leftNormal(dir);
-        tryStep(b, s, "hole", [&](const TopoDS_Shape& p) {
+        tryStep(b, sheet, "hole", [&](const TopoDS_Shape& p) {
             const gp_Pnt base(centre.x - n.x, y, centre.y - n.y);
             return cut(p, cylinder(base, gp_Dir(n.x, 0.0, n.y), r, 2.0));
         });
     }
-    // The free ends' four corners: rounded or chamfered in the sheet's plane, or left square.
+}
+
+/// The free ends' four corners: rounded or chamfered in the sheet's plane, or left square.
+void finishFreeCorners(PartBuild& b, TopoDS_Shape& sheet, const SheetProfile& profile, double width)
+{
+    const RandomPartOptions& o = b.options;
     for (const bool last : {false, true}) {
-        const size_t f = last ? static_cast<size_t>(flanges) - 1 : 0;
-        const Point2 end = last ? corner.back() : corner.front();
-        const Point2 dir = unitOf((last ? corner[f] : corner[1]) - end); // into the flange
-        const double flat = norm(corner[f + 1] - corner[f]) - tangentLength[f] -
-                            (f + 1 < static_cast<size_t>(flanges) ? tangentLength[f + 1] : 0.0);
-        const double cap = std::min({o.maxRadius, 0.4 * flat, 0.4 * D});
+        const size_t f = last ? profile.flanges() - 1 : 0;
+        const Point2 end = last ? profile.corner.back() : profile.corner.front();
+        const Point2 dir = unitOf(profile.corner[last ? f : 1] - end); // into the flange
+        const double cap = std::min({o.maxRadius, 0.4 * profile.flat(f), 0.4 * width});
         for (const bool far : {false, true}) {
-            const int kind = d.integer("end_corner_kind", 0, 2); // square, rounded, chamfered
+            const int kind = b.draws.integer("end_corner_kind", 0, 2); // square, round, chamfer
             if (kind == 0 || cap < o.minRadius) {
                 continue;
             }
             const double size = b.radius(kind == 1 ? "corner_radius" : "chamfer_distance", cap);
-            // (s, v): s along the flange from its end, v across from the corner's side.
-            const auto at = [&](double s, double v) {
-                const Point2 p = end + s * dir;
-                return gp_Pnt(p.x, far ? D - v : v, p.y);
-            };
+            // (s, v): s along the flange from its end, v across from the corner's side; the
+            // tool reaches one spacing to either side of the sheet.
             const Point2 n = leftNormal(dir);
             const gp_Vec across(2.0 * n.x, 0.0, 2.0 * n.y);
-            const gp_Vec back(-n.x, 0.0, -n.y);
-            const auto lifted = [&](gp_Pnt p) { return p.Translated(back); };
-            const bool made = tryStep(b, s, "end corner", [&](const TopoDS_Shape& p) {
-                TopoDS_Shape tool;
-                if (kind == 1) {
-                    // The square beyond the quarter circle of radius `size` at the corner.
-                    tool = prism(polygonFace({lifted(at(-1.0, -1.0)), lifted(at(size, -1.0)),
-                                              lifted(at(size, size)), lifted(at(-1.0, size))}),
-                                 across);
-                    tool = cut(tool, cylinder(lifted(at(size, size)), gp_Dir(across), size,
-                                              across.Magnitude()));
-                } else {
+            const auto at = [&](double s, double v) {
+                const Point2 p = end + s * dir - n;
+                return gp_Pnt(p.x, far ? width - v : v, p.y);
+            };
+            const bool made = tryStep(b, sheet, "end corner", [&](const TopoDS_Shape& p) {
+                if (kind == 2) {
                     // The triangle beyond the line from (size, 0) to (0, size).
-                    tool = prism(polygonFace({lifted(at(-1.0, -1.0)), lifted(at(size + 1.0, -1.0)),
-                                              lifted(at(-1.0, size + 1.0))}),
-                                 across);
+                    return cut(p, prism(polygonFace({at(-1.0, -1.0), at(size + 1.0, -1.0),
+                                                     at(-1.0, size + 1.0)}),
+                                        across));
                 }
-                return cut(p, tool);
+                // The square beyond the quarter circle of radius `size` at the corner.
+                const TopoDS_Shape square = prism(
+                    polygonFace({at(-1.0, -1.0), at(size, -1.0), at(size, size), at(-1.0, size)}),
+                    across);
+                return cut(p, cut(square, cylinder(at(size, size), gp_Dir(across), size,
+                                                   across.Magnitude())));
             });
             if (made && kind == 1) {
                 b.noteRadius(size);
             }
         }
     }
+}
+
+// An open shell: flat flanges joined by bends of drawn angle and radius (a zero radius is a
+// sharp fold), holes punched through the flanges, the free ends' corners finished.
+TopoDS_Shape sheetMetal(PartBuild& b, double area)
+{
+    Draws& d = b.draws;
+    b.closed = false;
+    const int flanges = d.integer("flanges", 2, 5);
+    const double widthRatio = d.uniform("width_ratio", 0.3, 1.0);
+    std::vector<double> lengths;
+    double sum = 0.0;
+    for (int i = 0; i < flanges; ++i) {
+        lengths.push_back(d.uniform("flange_ratio", 0.3, 1.0));
+        sum += lengths.back();
+    }
+    const double L = d.note("scale", sideForArea(area, widthRatio * sum));
+    const double D = d.note("width", widthRatio * L);
+    for (double& l : lengths) {
+        l *= L;
+    }
+    const SheetProfile profile = drawSheetProfile(b, lengths);
+    TopoDS_Shape s = prism(sheetWire(profile), gp_Vec(0, D, 0));
+    require(isValidPart(s, false), "sheet");
+    punchHoles(b, s, profile, D);
+    finishFreeCorners(b, s, profile, D);
     return s;
 }
 
