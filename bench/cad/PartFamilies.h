@@ -59,8 +59,9 @@ struct RandomPartOptions
     double chamferShare = 0.3;
     /// Probability that a fillet's radius varies linearly along its edge.
     double variableFilletShare = 0.3;
-    /// Attempts per rounding step: the drawn radii, then halved, then half the edges, then one
-    /// edge at the smallest radius; when all fail the part keeps its sharp edges (reported).
+    /// Attempts per rounding step: the drawn sizes, then halved, then half the edges (a
+    /// quarter, ...), the last try each edge alone at minRadius; when all fail the part keeps
+    /// those edges sharp (reported in RandomPart::fallbacks).
     int roundingTries = 4;
     /// Dihedral angles drawn for slanted faces, bends and drafts (degrees).
     double minDihedralDegrees = 10.0;
