@@ -817,7 +817,13 @@ TopoDS_Shape revolved(PartBuild& b, double area)
     std::vector<double> length;
     double sum = 0.0;
     for (int i = 0; i < sections; ++i) {
-        radius.push_back(d.uniform("section_radius", 0.4 * R, R));
+        double r = d.uniform("section_radius", 0.4 * R, R);
+        if (i > 0 && std::abs(r - radius.back()) < b.options.minShoulder) {
+            // A shoulder thinner than a detector can see: pushed to the smallest step.
+            r = d.note("section_radius_stepped",
+                       radius.back() + (r < radius.back() ? -1.0 : 1.0) * b.options.minShoulder);
+        }
+        radius.push_back(r);
         length.push_back(d.uniform("section_length_weight", 0.5, 1.5));
         sum += length.back();
     }
@@ -851,6 +857,7 @@ TopoDS_Shape revolved(PartBuild& b, double area)
             profile.push_back({r, start});
         }
         const double end = z + l;
+        // A groove where the section is over 12 spacings long with 4 of material over the bore.
         if (end - start > 12.0 && r - bore > 4.0 && d.chance(0.4)) {
             const double w = d.uniform("groove_width", 2.0, std::max(2.0, 0.3 * (end - start)));
             const double depth = d.uniform("groove_depth", 1.0, std::max(1.0, 0.3 * (r - bore)));
@@ -1397,8 +1404,8 @@ void checkOptions(const RandomPartOptions& o)
         o.maxRoundedEdges < 1 || o.roundingTries < 1 ||
         !positiveRange(o.minDihedralDegrees, o.maxDihedralDegrees) ||
         !(o.maxDihedralDegrees < 180.0) || !positiveRange(o.minWall, o.maxWall) ||
-        !positiveRange(o.minRibGap, o.maxRibGap) || !(o.chamferShare >= 0.0) ||
-        !(o.chamferShare <= 1.0) || !(o.variableFilletShare >= 0.0) ||
+        !positiveRange(o.minRibGap, o.maxRibGap) || !(o.minShoulder > 0.0) ||
+        !(o.chamferShare >= 0.0) || !(o.chamferShare <= 1.0) || !(o.variableFilletShare >= 0.0) ||
         !(o.variableFilletShare <= 1.0)) {
         throw std::invalid_argument("Random part options: every range needs 0 < min <= max, "
                                     "dihedral angles below 180 degrees, shares in [0, 1], at "

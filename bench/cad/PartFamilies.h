@@ -69,6 +69,9 @@ struct RandomPartOptions
     /// Wall thickness of the thin-shell family (spacings).
     double minWall = 1.5;
     double maxWall = 10.0;
+    /// Smallest radius step between neighbouring shaft sections of the revolved family
+    /// (spacings): closer radii are pushed apart to it.
+    double minShoulder = 2.0;
     /// Gap between neighbouring ribs or grooves of the ribbed plate (spacings).
     double minRibGap = 2.0;
     double maxRibGap = 30.0;
