@@ -471,6 +471,8 @@ TopoDS_Shape roundRandomEdges(PartBuild& build, TopoDS_Shape shape, double cap)
             roundings.push_back(r);
         }
         if (roundings.empty()) {
+            build.failed(std::string(chamfer ? "chamfers" : "fillets") +
+                         " left out (no sharp edge long enough)");
             continue;
         }
         const int attempt = applyRoundings(build, shape, roundings, chamfer);

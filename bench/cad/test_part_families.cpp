@@ -163,6 +163,22 @@ TEST(PartFamilies, FixedPointCountAndRanges)
     }
 }
 
+// Fillets and chamfers of 30 spacings on a block 26 spacings high cannot be made: every try
+// fails, the part keeps those edges sharp, says so, and is still a valid solid.
+TEST(PartFamilies, RoundingsThatCannotBeMadeAreLeftOutAndReported)
+{
+    RandomPartOptions options;
+    options.points = 10000.0;
+    options.minRadius = 30.0;
+    options.maxRadius = 30.0;
+    const RandomPart part = makeRandomPart(0, options);
+    ASSERT_EQ(part.family, PartFamily::PrismaticBlock);
+    EXPECT_NE(part.fallbacks.find("left out (4 tries)"), std::string::npos) << part.fallbacks;
+    EXPECT_TRUE(BRepCheck_Analyzer(part.shape).IsValid());
+    EXPECT_EQ(countOf(part.shape, TopAbs_SOLID), 1);
+    EXPECT_DOUBLE_EQ(part.smallestRadius, 0.0);
+}
+
 TEST(PartFamilies, BadOptionsThrow)
 {
     RandomPartOptions options;
