@@ -40,11 +40,11 @@ struct RandomPartOptions
     double minPoints = 1e4;
     double maxPoints = 1e6;
     /// Poisson-disk radius (ShapeSampling.h) per intended spacing: the sampler's mean spacing
-    /// comes out 1.12 r on these parts, so r = 0.89 gives spacing 1.
-    double radiusPerSpacing = 0.89;
+    /// comes out 1.11 r on these parts, so r = 0.9 gives spacing 1.
+    double radiusPerSpacing = 0.9;
     /// Samples per square spacing the part's area is sized for: the sampler's 0.57 / r^2 at
     /// r = radiusPerSpacing.
-    double pointsPerSquareSpacing = 0.72;
+    double pointsPerSquareSpacing = 0.7;
     /// Fillet radii, chamfer distances and sheet-metal bend radii (spacings), drawn
     /// log-uniformly in [min, max], the max lowered where the family's features are smaller.
     double minRadius = 1.0;
@@ -103,7 +103,7 @@ struct RandomPart
     double spacing = 1.0;
     /// The Poisson-disk radius that samples the part at that spacing (spacing times
     /// options.radiusPerSpacing).
-    double samplingRadius = 0.89;
+    double samplingRadius = 0.9;
     /// The point count the part's area was sized for.
     double targetPoints = 0.0;
     /// Steps that failed and were left out (a feature, a rounding), empty when none.
