@@ -43,6 +43,18 @@ inline fs::path folderOf(const std::string& path)
     return parent.empty() ? fs::path(".") : parent;
 }
 
+/// The file written for `path`: the file a symbolic link names (the link is kept), else
+/// `path` itself.
+inline std::string linkTarget(const std::string& path)
+{
+    std::error_code error;
+    if (!fs::is_symlink(fs::symlink_status(path, error))) {
+        return path;
+    }
+    const fs::path target = fs::weakly_canonical(path, error);
+    return error ? path : target.string();
+}
+
 /// The temporary file beside `path` that is renamed over it once complete.
 inline std::string temporaryFor(const std::string& path)
 {
@@ -84,17 +96,21 @@ inline void checkOutputs(const std::string& input, const std::vector<OutputFile>
             }
         }
         std::error_code error;
-        if (fs::is_directory(o.path, error)) {
+        const fs::file_status status = fs::status(o.path, error);
+        if (fs::is_directory(status)) {
             throw std::runtime_error(o.path + ": is a folder; the output needs a file name");
         }
-        const fs::path folder = folderOf(o.path);
+        if (fs::exists(status) && !fs::is_regular_file(status)) {
+            continue; // a device such as /dev/stdout, written directly (writeWhole)
+        }
+        const fs::path folder = folderOf(linkTarget(o.path));
         if (!fs::is_directory(folder, error)) {
             throw std::runtime_error(o.path + ": the folder " + folder.string() +
                                      " does not exist");
         }
         // Whether the folder takes a new file (permissions, a read-only file system): the
         // temporary file the result is written to first, created and removed.
-        const std::string probe = temporaryFor(o.path);
+        const std::string probe = temporaryFor(linkTarget(o.path));
         std::FILE* file = std::fopen(probe.c_str(), "wb");
         if (!file) {
             throw std::runtime_error(o.path + ": cannot write in the folder " + folder.string() +
@@ -107,13 +123,15 @@ inline void checkOutputs(const std::string& input, const std::vector<OutputFile>
 
 /// Writes `content` to `path` whole or not at all: into a temporary file beside it, flushed
 /// and synced to the disk, then renamed over `path`, so a failed or cut-short write leaves a
-/// previous file of that name as it was. A path that exists and is not a regular file (a
-/// device such as /dev/stdout) is written directly. Throws std::runtime_error naming the file.
+/// previous file of that name as it was. A symbolic link is followed (the file it names is
+/// replaced, the link kept); a path that exists and is not a regular file (a device such as
+/// /dev/stdout) is written directly. Throws std::runtime_error naming the file.
 inline void writeWhole(const std::string& path, const std::string& content)
 {
     std::error_code error;
     const bool direct = fs::exists(path, error) && !fs::is_regular_file(path, error);
-    const std::string target = direct ? path : temporaryFor(path);
+    const std::string finalPath = linkTarget(path);
+    const std::string target = direct ? path : temporaryFor(finalPath);
     const auto failed = [&](const std::string& reason) {
         if (!direct) {
             std::error_code ignored;
@@ -142,7 +160,7 @@ inline void writeWhole(const std::string& path, const std::string& content)
         throw failed(std::strerror(reason != 0 ? reason : EIO));
     }
     if (!direct) {
-        fs::rename(target, path, error);
+        fs::rename(target, finalPath, error);
         if (error) {
             throw failed(error.message());
         }

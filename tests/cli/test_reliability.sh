@@ -70,6 +70,17 @@ echo "old" > "$work/lines.json"
 "$bin" extract "$cloud" -o "$work/lines.json" > /dev/null || fail "extract exited $?"
 grep -q '"lines"' "$work/lines.json" || fail "extract did not replace the old lines.json"
 
+# An output that is a link to another file: the file is replaced, the link kept.
+echo "old" > "$work/real.json"
+ln -s real.json "$work/link.json"
+"$bin" extract "$cloud" -o "$work/link.json" > /dev/null || fail "extract through a link exited $?"
+[ -L "$work/link.json" ] || fail "the output link was replaced by a file"
+grep -q '"lines"' "$work/real.json" || fail "the file behind the output link was not written"
+
+# A device is written directly: /dev/stdout gives one curvature line per point.
+lines=$("$bin" curvature "$cloud" -o /dev/stdout | wc -l)
+[ "$lines" -eq "$(wc -l < "$cloud")" ] || fail "curvature -o /dev/stdout wrote $lines lines"
+
 # ---- inputs ----
 printf '0 0 0\n1,5 2,25 3,125\n' > "$work/comma.xyz"
 expect 1 "decimal commas are not supported, line 2" "$work/comma.xyz" info "$work/comma.xyz"
