@@ -220,20 +220,37 @@ int ExtractionResult::countLines(LineType type) const
                                           [type](const FeatureLine& l) { return l.type == type; }));
 }
 
+namespace {
+
+/// The distinct points of a cloud of `inputRows` points are more than k and not on one line.
+void requireDistinctSurface(const PointMatrix& distinct, Eigen::Index inputRows, int k)
+{
+    if (distinct.rows() <= k) {
+        throw std::invalid_argument(
+            "point cloud: " + std::to_string(distinct.rows()) + " distinct points (" +
+            std::to_string(inputRows - distinct.rows()) + " duplicates merged); at least " +
+            std::to_string(k + 1) + " are needed for " + std::to_string(k) +
+            " neighbours per point");
+    }
+    requireSurface(distinct);
+}
+
+} // namespace
+
+void requireSurfaceCloud(const PointMatrix& P, int k)
+{
+    checkFinite(P, "point cloud");
+    std::vector<int> inputToPoint;
+    requireDistinctSurface(orderedDistinctPoints(P, inputToPoint), P.rows(), k);
+}
+
 CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options,
                            const std::function<bool(double, const std::string&)>& progress)
 {
     checkFinite(P, "point cloud");
     CloudGeometry g;
     g.points = orderedDistinctPoints(P, g.inputToPoint);
-    if (g.points.rows() <= options.k) {
-        throw std::invalid_argument(
-            "point cloud: " + std::to_string(g.points.rows()) + " distinct points (" +
-            std::to_string(P.rows() - g.points.rows()) + " duplicates merged); at least " +
-            std::to_string(options.k + 1) + " are needed for " + std::to_string(options.k) +
-            " neighbours per point");
-    }
-    requireSurface(g.points);
+    requireDistinctSurface(g.points, P.rows(), options.k);
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
     releaseIdleThreads(); // meanSpacing is a serial sum

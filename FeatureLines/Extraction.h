@@ -103,8 +103,14 @@ struct CloudGeometry
     double spacing = 0.0;
 };
 
-/// Validates the cloud (finite, enough distinct points) and computes neighbours, normals and
-/// spacing. Throws std::invalid_argument naming the problem.
+/// Throws std::invalid_argument naming the problem when P is no cloud feature lines can be
+/// found on: a coordinate that is not finite, k or fewer distinct points (exact duplicates
+/// merged), or all points on one line. analyseCloud's own check, for the tools that compute
+/// other stages (the curvature) of the same cloud.
+void requireSurfaceCloud(const PointMatrix& P, int k);
+
+/// Validates the cloud (requireSurfaceCloud) and computes neighbours, normals and spacing.
+/// Throws std::invalid_argument naming the problem.
 CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options = {},
                            const std::function<bool(double, const std::string&)>& progress = {});
 

@@ -4,27 +4,34 @@
 //
 // Exit codes: 0 success, 1 bad input data (unreadable file, too few points, ...), 2 a usage
 // error (unknown command or option, missing or absurd value). Errors print one line on stderr,
-// "featurelines: <reason>".
+// "featurelines: <reason>". A bound that follows from the call or the machine (--k above 256,
+// --threads above 4 x the cores, an output file that is the input) is a usage error; one that
+// follows from the cloud (--k or --bins not below its point count) or the file system (an output
+// folder that does not exist, a failed write) is bad input.
+//
+// Outputs are checked before any work, then written whole or not at all (OutputFiles.h).
 #include <algorithm>
 #include <exception>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include "FeatureLines/io/CloudIO.h"
-#include "FeatureLines/curvature/Curvature.h"
 #include "FeatureLines/Extraction.h"
-#include "FeatureLines/smooth/HistogramThreshold.h"
-#include "FeatureLines/neighbourhoods/Neighbours.h"
-#include "FeatureLines/neighbourhoods/Normals.h"
-#include "FeatureLines/curvature/Smoothing.h"
 #include "FeatureLines/cli/Arguments.h"
 #include "FeatureLines/cli/Json.h"
+#include "FeatureLines/cli/OutputFiles.h"
+#include "FeatureLines/curvature/Curvature.h"
+#include "FeatureLines/curvature/Smoothing.h"
+#include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/HistogramThreshold.h"
 
 namespace featurelines::cli {
 namespace {
@@ -45,11 +52,13 @@ struct Command
 
 OptionSpec kOption()
 {
-    return {"--k", "N", "neighbours per point for normals and curvature, at least 3 (default 16)"};
+    return {"--k", "N",
+            "neighbours per point for normals and curvature, 3 to 256 and below the point count "
+            "(default 16)"};
 }
 OptionSpec threadsOption()
 {
-    return {"--threads", "T", "worker threads, 0 for all cores (default 0)"};
+    return {"--threads", "T", "worker threads, 0 for all cores, at most 4 x the cores (default 0)"};
 }
 OptionSpec smoothOption()
 {
@@ -76,13 +85,37 @@ std::string inputPath(const Arguments& a)
     return a.positional()[0];
 }
 
+/// The largest --k: the quadric fit and the neighbour search grow with k, and 256 neighbours
+/// already span several spacings of any cloud the extraction reads well.
+constexpr long maximumK = 256;
+
 int neighbourCount(const Arguments& a)
 {
-    return static_cast<int>(a.integer("--k", 16, 3, 10000));
+    return static_cast<int>(a.integer("--k", 16, 3, maximumK));
 }
+
+/// At most 4 threads per core: more only cost memory and switching.
 int threadCount(const Arguments& a)
 {
-    return static_cast<int>(a.integer("--threads", 0, 0, 4096));
+    const long cores = std::max(1u, std::thread::hardware_concurrency());
+    const long threads = a.integer("--threads", 0, 0, std::numeric_limits<int>::max());
+    if (threads > 4 * cores) {
+        throw UsageError("--threads must be at most " + std::to_string(4 * cores) + " (4 x the " +
+                         std::to_string(cores) + " cores), got " + std::to_string(threads));
+    }
+    return static_cast<int>(threads);
+}
+
+/// std::runtime_error (exit 1) unless the option `name`, when given, is below the cloud's
+/// point count: k neighbours need k + 1 points, L bins more values than bins.
+void requireBelowPointCount(const Arguments& a, const std::string& name, long value,
+                            const std::string& input, Eigen::Index points)
+{
+    if (a.has(name) && value >= points) {
+        throw std::runtime_error(name + " " + std::to_string(value) +
+                                 " must be below the point count of " + input + " (" +
+                                 std::to_string(points) + ")");
+    }
 }
 
 /// The options of the curvature stages, read (and checked) before the cloud is.
@@ -104,9 +137,11 @@ CurvatureSettings curvatureSettings(const Arguments& a)
 }
 
 /// Sec. 2.1: mean curvature from the quadric fitted over the k nearest neighbours, after the
-/// optional smoothing of Sec. 2.4.
+/// optional smoothing of Sec. 2.4. The cloud is checked as extract checks it (duplicates only,
+/// points on a line: no curvature to measure).
 Eigen::VectorXd curvatureOf(const CurvatureSettings& s, const PointMatrix& cloud)
 {
+    requireSurfaceCloud(cloud, s.neighbours.k);
     PointMatrix P = cloud;
     Neighbourhoods N = nearestNeighbours(P, s.neighbours);
     if (s.smoothingPasses > 0) {
@@ -168,23 +203,17 @@ int runCurvature(const Arguments& a)
         throw UsageError("curvature needs an output file: -o FILE");
     }
     const std::string output = a.text("--output");
-    if (output.empty()) {
-        throw UsageError("the output file name is empty");
-    }
     const CurvatureSettings settings = curvatureSettings(a);
-    const Eigen::VectorXd H = curvatureOf(settings, readCloud(input));
+    checkOutputs(input, {{"--output", output}});
+    const PointMatrix cloud = readCloud(input);
+    requireBelowPointCount(a, "--k", settings.neighbours.k, input, cloud.rows());
+    const Eigen::VectorXd H = curvatureOf(settings, cloud);
 
-    std::ofstream out(output);
-    if (!out) {
-        throw std::invalid_argument("cannot write '" + output + "'");
-    }
+    std::string text;
     for (Eigen::Index i = 0; i < H.size(); ++i) {
-        out << Arguments::format(H[i]) << '\n';
+        text += Arguments::format(H[i]) + '\n';
     }
-    out.close();
-    if (!out) {
-        throw std::invalid_argument("cannot write '" + output + "' (disk full?)");
-    }
+    writeWhole(output, text);
     return 0;
 }
 
@@ -235,7 +264,10 @@ int runThreshold(const Arguments& a)
                                     : 0.0;
     const CurvatureSettings settings = curvatureSettings(a);
 
-    const Eigen::VectorXd H = curvatureOf(settings, readCloud(input));
+    const PointMatrix cloud = readCloud(input);
+    requireBelowPointCount(a, "--k", settings.neighbours.k, input, cloud.rows());
+    requireBelowPointCount(a, "--bins", options.bins, input, cloud.rows());
+    const Eigen::VectorXd H = curvatureOf(settings, cloud);
     const std::vector<double> values(H.data(), H.data() + H.size());
     // Sec. 2.3: the next lower (higher) threshold searches only the values below (above) T.
     const ThresholdResult r = below   ? findLowerThreshold(values, previous, options)
@@ -431,17 +463,13 @@ void writeLinesFile(const std::string& output, const std::string& input, Eigen::
         .add("lines", linesJson(r))
         .add("junctions", pointsJson(r.junctions))
         .add("regions", regionsJson(r));
-    std::ofstream out(output);
-    out << result.str() << "\n";
-    if (!out) {
-        throw std::invalid_argument(output + ": writing the file failed");
-    }
+    writeWhole(output, result.str() + "\n");
 }
 
 /// The labels file (--labels): per input point its region, patch, label and curvature.
 void writeLabelsFile(const std::string& file, const ExtractionResult& r)
 {
-    std::ofstream labels(file);
+    std::ostringstream labels;
     labels << "# region patch label curvature (label: 0 low, 1 inner, 2 border, 3 noisy, "
               "255 outside every region)\n"
            << std::setprecision(9);
@@ -449,9 +477,7 @@ void writeLabelsFile(const std::string& file, const ExtractionResult& r)
         labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i]) << ' '
                << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
     }
-    if (!labels) {
-        throw std::invalid_argument(file + ": writing the file failed");
-    }
+    writeWhole(file, labels.str());
 }
 
 /// The one-line summary on stdout, and a note when there is no line.
@@ -479,7 +505,14 @@ int runExtract(const Arguments& a)
     }
     const std::string output = a.text("--output");
     const ExtractionOptions options = extractionOptions(a);
+    std::vector<OutputFile> outputs{{"--output", output}};
+    if (a.has("--labels")) {
+        outputs.push_back({"--labels", a.text("--labels")});
+    }
+    checkOutputs(input, outputs);
     const PointMatrix cloud = readCloud(input);
+    requireBelowPointCount(a, "--k", options.neighbours.k, input, cloud.rows());
+    requireBelowPointCount(a, "--bins", options.smooth.histogram.bins, input, cloud.rows());
     const ExtractionResult r = extractFeatureLines(cloud, options);
     writeLinesFile(output, input, cloud.rows(), r);
     if (a.has("--labels")) {
@@ -515,7 +548,9 @@ const std::vector<Command>& commands()
          "[--json]",
          {{"--below", "T", "next lower threshold: search only the values <= T (Sec. 2.3)"},
           {"--above", "T", "next higher threshold: search only the values > T (Sec. 2.3)"},
-          {"--bins", "L", "start resolution L_start, 2 to 1000000 (default 50, Sec. 2.2)"},
+          {"--bins", "L",
+           "start resolution L_start, 2 to 1000000 and below the point count (default 50, "
+           "Sec. 2.2)"},
           {"--outliers", "PCT",
            "drop this percentage of the highest curvatures first, 0 <= PCT < 100 (default 0, "
            "Sec. 2.4)"},
@@ -546,7 +581,9 @@ const std::vector<Command>& commands()
           {"--smoothing", "M",
            "automatic (when a region is noisy), always or never (Sec. 2.4; default automatic)"},
           {"--smooth", "N", "Taubin passes when a region is smoothed (default 20)"},
-          {"--bins", "L", "start resolution L_start, 2 to 1000000 (default 50, Sec. 2.2)"},
+          {"--bins", "L",
+           "start resolution L_start, 2 to 1000000 and below the point count (default 50, "
+           "Sec. 2.2)"},
           {"--outliers", "PCT",
            "drop this percentage of the highest curvatures (default: 1 in noisy regions, else 0)"},
           {"--max-scale", "S",

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -39,10 +41,43 @@ bool isSeparator(char c)
     return c == ' ' || c == '\t' || c == ',';
 }
 
-/// One token for a message: at most 20 characters, so a binary file gives a readable line.
+/// One token for a message: at most 20 bytes, those outside printable ASCII written as \xNN,
+/// so a binary file gives a readable line and sends no escape sequence to the terminal.
 std::string quoted(std::string_view token)
 {
-    return "'" + std::string(token.substr(0, 20)) + (token.size() > 20 ? "...'" : "'");
+    std::string out = "'";
+    for (const char c : token.substr(0, 20)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7F && byte != '\\') {
+            out += c;
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+            out += escaped;
+        }
+    }
+    return out + (token.size() > 20 ? "...'" : "'");
+}
+
+/// True for a row such as "1,5 2,25 3,125": numbers separated by white space with a comma
+/// between two digits inside one of them. A row of commas alone ("1.5,2.5,3.5" or "1, 2, 3")
+/// is a CSV row; a comma between digits where white space also separates the numbers can
+/// only be a decimal comma, and reading it as a separator would give other numbers.
+bool hasDecimalComma(const char* p, const char* lineEnd)
+{
+    bool spaceBetweenWords = false, commaInWord = false;
+    for (const char* c = p; c < lineEnd; ++c) {
+        if ((*c == ' ' || *c == '\t') && c > p && c + 1 < lineEnd && c[-1] != ',' && c[-1] != ' ' &&
+            c[-1] != '\t' && c[1] != ' ' && c[1] != '\t' && c[1] != ',') {
+            spaceBetweenWords = true;
+        }
+        if (*c == ',' && c > p && c + 1 < lineEnd &&
+            std::isdigit(static_cast<unsigned char>(c[-1])) &&
+            std::isdigit(static_cast<unsigned char>(c[1]))) {
+            commaInWord = true;
+        }
+    }
+    return spaceBetweenWords && commaInWord;
 }
 
 /// The bytes of the file at `path`.
@@ -93,6 +128,10 @@ const char* readCoordinate(const char* p, const char* lineEnd, int coordinate,
         throw std::invalid_argument(where + "coordinate " + quoted(token) +
                                     " is not a finite number");
     }
+    if (std::abs(value) > FLT_MAX) {
+        throw std::invalid_argument(where + "coordinate " + quoted(token) +
+                                    " is beyond the float range (3.4e38)");
+    }
     xyz.push_back(value);
     return tokenEnd;
 }
@@ -130,6 +169,11 @@ PointMatrix readText(const std::string& path)
             continue;
         }
         const std::string where = path + ", line " + std::to_string(lineNumber) + ": ";
+        if (hasDecimalComma(p, lineEnd)) {
+            throw std::invalid_argument(path + ": decimal commas are not supported, line " +
+                                        std::to_string(lineNumber) +
+                                        " (write 1.5, not 1,5; commas separate x,y,z)");
+        }
         for (int coordinate = 0; coordinate < 3; ++coordinate) {
             p = readCoordinate(p, lineEnd, coordinate, where, xyz);
         }
@@ -154,6 +198,12 @@ PointMatrix readCloud(const std::string& path)
     if (fs::is_directory(status)) {
         throw std::invalid_argument(path + ": is a folder, not a point cloud file");
     }
+    // A FIFO would block the read forever, a device would never end: only regular files
+    // (links to them included) are read.
+    if (!fs::is_regular_file(status)) {
+        throw std::invalid_argument(path + ": is not a regular file (a pipe, socket or device); "
+                                           "save the cloud to a file first");
+    }
     const std::string extension = lowercaseExtension(path);
     PointMatrix P;
     if (extension == ".xyz" || extension == ".txt" || extension == ".asc" || extension == ".csv") {
@@ -167,6 +217,7 @@ PointMatrix readCloud(const std::string& path)
             "; known: .xyz .txt .asc .csv .ply .pcd");
     }
     checkFinite(P, path);
+    checkFloatRange(P, path);
     return P;
 }
 
@@ -194,6 +245,16 @@ void writeXyz(const std::string& path, const PointMatrix& P)
     file.close();
     if (!file) {
         throw std::invalid_argument(path + ": writing the file failed");
+    }
+}
+
+void checkFloatRange(const PointMatrix& P, const std::string& what)
+{
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        if ((P.row(i).array().abs() > FLT_MAX).any()) {
+            throw std::invalid_argument(what + ": point " + std::to_string(i + 1) +
+                                        " has a coordinate beyond the float range (3.4e38)");
+        }
     }
 }
 

@@ -18,6 +18,11 @@
 
 namespace featurelines::detail {
 
+/// HeaderRows.cpp: throw naming the header field when the data rows of a PLY (PCD) file are
+/// fewer or more than its header says.
+void checkPlyRows(const std::string& path);
+void checkPcdRows(const std::string& path);
+
 namespace {
 
 /// PCL prints its own diagnostics to stderr; the caller gets ours in the exception instead.
@@ -127,6 +132,11 @@ PointMatrix readPclCloud(const std::string& path, bool ply)
     pcl::PCLPointCloud2 cloud;
     int status = -1;
     if (ply || pcdHeaderIsComplete(path)) {
+        if (ply) {
+            checkPlyRows(path);
+        } else {
+            checkPcdRows(path);
+        }
         const QuietPcl quiet;
         try {
             status = ply ? pcl::io::loadPLYFile(path, cloud) : pcl::io::loadPCDFile(path, cloud);

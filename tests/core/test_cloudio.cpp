@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -82,7 +83,7 @@ TEST_F(CloudIO, XyzRoundTripIsExact)
 {
     PointMatrix P(4, 3);
     P << 0.1, 0.2, 0.3,             //
-        -1e-300, 1e300, 12345.678,  //
+        -1e-300, 3e38, 12345.678,   //
         1.0 / 3.0, -2.0 / 7.0, 0.0, //
         1e6 + 0.001, -2e6, 5e5;
     writeXyz(path("cloud.xyz"), P);
@@ -213,7 +214,10 @@ TEST_F(CloudIO, BadFilesNameTheProblem)
                                                          "element vertex 10\nproperty float x\n"
                                                          "property float y\nproperty float z\n"
                                                          "end_header\n\x01\x02");
-    EXPECT_NE(readError(truncated).find("not a readable PLY file"), std::string::npos);
+    EXPECT_NE(readError(truncated).find("the header says 'element vertex 10', the file ends in "
+                                        "row 1"),
+              std::string::npos)
+        << readError(truncated);
     const std::string noZ = write("flat.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
                                               "property float x\nproperty float y\n"
                                               "end_header\n1 2\n");
@@ -245,4 +249,78 @@ TEST(CheckFinite, NamesTheFirstBadPointAndTheMinimum)
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("point 4"), std::string::npos) << e.what();
     }
+}
+
+TEST_F(CloudIO, DecimalCommasAreRefusedCsvRowsAreRead)
+{
+    // Commas alone separate x,y,z, with or without spaces after them.
+    const PointMatrix csv = readCloud(write("rows.csv", "1,2,3\n4, 5, 6\n7.5,8.5,9.5,0,0,1\n"));
+    ASSERT_EQ(csv.rows(), 3);
+    EXPECT_EQ(csv(2, 0), 7.5);
+    EXPECT_EQ(csv(1, 2), 6.0);
+    // White space between the numbers and a comma between digits: decimal commas, which read
+    // as separators would give the point (1, 5, 2).
+    const std::string comma = write("comma.xyz", "0 0 0\n1,5 2,25 3,125\n");
+    EXPECT_NE(readError(comma).find("decimal commas are not supported, line 2"), std::string::npos)
+        << readError(comma);
+    EXPECT_NE(readError(write("tab.txt", "1,5\t2,25\t3,125\n")).find("decimal commas"),
+              std::string::npos);
+}
+
+TEST_F(CloudIO, RawBytesAreEscapedInMessages)
+{
+    const std::string binary = write("binary.xyz", std::string("\x1b[2J\x00\x01 0 0\n", 12));
+    const std::string message = readError(binary);
+    EXPECT_NE(message.find("'\\x1B[2J\\x00\\x01'"), std::string::npos) << message;
+    for (const char c : message) {
+        EXPECT_TRUE(c >= 0x20 && c < 0x7F) << "byte " << int(static_cast<unsigned char>(c));
+    }
+}
+
+TEST_F(CloudIO, NonRegularFilesAreRefusedBeforeOpening)
+{
+    ASSERT_EQ(mkfifo(path("pipe.xyz").c_str(), 0600), 0);
+    EXPECT_NE(readError(path("pipe.xyz")).find("is not a regular file"), std::string::npos);
+    EXPECT_NE(readError("/dev/null").find("is not a regular file"), std::string::npos);
+}
+
+TEST_F(CloudIO, CoordinatesBeyondTheFloatRangeAreRefused)
+{
+    EXPECT_NE(readError(write("big.xyz", "0 0 0\n1e39 0 0\n"))
+                  .find("line 2: coordinate '1e39' is beyond the float range"),
+              std::string::npos);
+    const std::string ply = write("big.ply", "ply\nformat ascii 1.0\nelement vertex 2\n"
+                                             "property double x\nproperty double y\n"
+                                             "property double z\nend_header\n0 0 0\n0 -1e300 0\n");
+    EXPECT_NE(readError(ply).find("point 2 has a coordinate beyond the float range"),
+              std::string::npos)
+        << readError(ply);
+}
+
+TEST_F(CloudIO, DataRowsMustMatchTheHeader)
+{
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\n";
+    const std::string more = write("more.ply", header + "0 0 0\n1 0 0\n0 1 0\n");
+    EXPECT_NE(readError(more).find("the header says 'element vertex 2' (2 data rows), the file "
+                                   "holds 3"),
+              std::string::npos)
+        << readError(more);
+    EXPECT_NE(readError(write("fewer.ply", header + "0 0 0\n")).find("'element vertex 2'"),
+              std::string::npos);
+
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 1\n"
+                         "property float x\nproperty float y\nproperty float z\nend_header\n";
+    binary += std::string(24, '\0'); // two points of zeros where the header says one
+    EXPECT_NE(readError(write("more-binary.ply", binary))
+                  .find("goes on past the header's 'element vertex 1' (12 bytes more)"),
+              std::string::npos);
+
+    const std::string pcd = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+                            "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n";
+    const std::string morePcd = write("more.pcd", pcd + "1 2 3\n4 5 6\n7 8 9\n");
+    EXPECT_NE(readError(morePcd).find("the header says 'POINTS 2', the file holds 3 data rows"),
+              std::string::npos)
+        << readError(morePcd);
+    EXPECT_NE(readError(write("fewer.pcd", pcd + "1 2 3\n")).find("'POINTS 2'"), std::string::npos);
 }
