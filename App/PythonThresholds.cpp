@@ -16,6 +16,7 @@
 #include "InteractiveThresholds.h"
 #include "PythonModule.h"
 #include "PythonValues.h"
+#include "StoredResult.h"
 
 namespace FeatureLines {
 
@@ -66,6 +67,7 @@ std::vector<double> histogramValues(PyObject* source, PyObject* region)
 {
     std::vector<double> values;
     if (Extraction* e = extractionOf(source)) {
+        requireCurrentResult(*e, "histogram");
         const auto& curvature = e->PointCurvature.getValues();
         const auto& regions = e->PointRegion.getValues();
         const long wanted = region == Py_None ? -1 : Py::Long(region).as_long();
