@@ -114,6 +114,20 @@ class DamagedDocumentTest(unittest.TestCase):
         self.assertRefused(lines, "PointRegion")
         self.assertRecovers(lines)
 
+    def test_a_region_number_beyond_region_count_is_an_error(self):
+        entry = point_indices_file(self.saved, "PointRegion")
+
+        def region_99(data):
+            values = read_point_indices(data)
+            values[7] = 99
+            return point_indices(values)
+
+        lines = self.reopen(self.damaged_copy("region.FCStd", entry, region_99))
+        self.assertIn("PointRegion[7] = 99 lies outside -1 .. RegionCount - 1 = 5",
+                      support.error_message(lines))
+        self.assertRefused(lines, "PointRegion\\[7\\] = 99")
+        self.assertRecovers(lines)
+
     def test_an_embedded_file_that_fails_to_read_is_an_error(self):
         # The count promises every point, the data stops halfway: FreeCAD reports "Reading
         # failed from embedded file" and the list restores empty.
