@@ -3,13 +3,17 @@
 // module (PythonModule.h, its functions by concern in Python*.cpp).
 #include <FCConfig.h>
 
+#include <App/Application.h>
+#include <App/Document.h>
 #include <Base/Console.h>
 #include <Base/Exception.h>
 #include <Base/Interpreter.h>
 #include <Base/PyObjectBase.h>
 #include <Standard_Failure.hxx>
 
+#include <set>
 #include <stdexcept>
+#include <string>
 
 #include "ExtractionFeature.h"
 #include "PropertyPointIndices.h"
@@ -34,6 +38,21 @@ template <class Call> Py::Object translated(Call call)
     } catch (const Standard_Failure& e) {
         throw Py::RuntimeError(std::string("OpenCASCADE: ") + e.GetMessageString());
     }
+}
+
+/// A FreeCAD without this module opens a document holding extractions without them, and saving
+/// it there drops them for good (docs/freecad-app.md). Said once per document and session, in
+/// the report view, when such a document is saved: the only moment FreeCAD's App side offers.
+void warnOnSaving(const App::Document& doc, const std::string& file)
+{
+    static std::set<std::string> warned;
+    if (doc.getObjectsOfType(Extraction::getClassTypeId()).empty() || !warned.insert(file).second) {
+        return;
+    }
+    Base::Console().Message(
+        "%s holds FeatureLines extractions: a FreeCAD without the FeatureLines module opens it "
+        "without them (the Points objects stay) and, if saved there, drops them for good.\n",
+        file.c_str());
 }
 
 } // namespace
@@ -74,6 +93,8 @@ PyMOD_INIT_FUNC(FeatureLines)
     FeatureLines::PropertyPointIndices::init();
     FeatureLines::Extraction::init();
     PyObject* mod = Base::Interpreter().addModule(new FeatureLines::Module);
+    // Lives as long as the process, as the module does.
+    App::GetApplication().signalStartSaveDocument.connect(&FeatureLines::warnOnSaving);
     Base::Console().Log("Loading FeatureLines module... done\n");
     PyMOD_Return(mod);
 }

@@ -13,6 +13,7 @@
 
 #include "ExtractionCache.h"
 #include "ExtractionProgress.h"
+#include "StoredResult.h"
 
 using namespace FeatureLines;
 
@@ -331,6 +332,7 @@ App::DocumentObjectExecReturn* Extraction::execute()
 {
     // Gathers the checked inputs, calls the core, sets the outputs; a check that fails or a run
     // that ends without lines returns its message.
+    damagedOnRestore = false;
     try {
         const Points::Feature& cloud = sourceCloud(Source.getValue());
         const featurelines::ExtractionOptions options = checkedOptions(*this);
@@ -376,6 +378,25 @@ void Extraction::setOutputs(const ExtractionOutputs& out)
     PointPatch.setValues(out.patch);
     PointLabel.setValues(out.label);
     PointCurvature.setValues(out.curvature);
+}
+
+short Extraction::mustExecute() const
+{
+    return damagedOnRestore ? 1 : Part::Feature::mustExecute();
+}
+
+void Extraction::onDocumentRestored()
+{
+    Part::Feature::onDocumentRestored();
+    // An object saved in error keeps its own message; its lists are those of its last good run,
+    // which may predate a change of the source, so only their agreement with one another is
+    // checked then.
+    const std::string problem = storedResultMismatch(*this, !isError());
+    if (!problem.empty()) {
+        damagedOnRestore = true;
+        throw Base::RuntimeError("the saved result cannot be used: " + problem +
+                                 ". Recompute to rebuild it from the source.");
+    }
 }
 
 void Extraction::onChanged(const App::Property* prop)

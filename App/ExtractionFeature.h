@@ -90,6 +90,8 @@ public:
     App::PropertyFloatList PointCurvature;
 
     App::DocumentObjectExecReturn* execute() override;
+    /// Also true after a restore found the stored result damaged, so a recompute rebuilds it.
+    short mustExecute() const override;
     /// Lines coloured by type, the task panel on double click (Gui/ViewProviderExtraction.h);
     /// FreeCAD loads FeatureLinesGui for it when a document holding the object is opened.
     const char* getViewProviderName() const override
@@ -104,10 +106,17 @@ public:
 
 protected:
     void onChanged(const App::Property* prop) override;
+    /// Checks what was read back (StoredResult.h): a damaged result puts the object in error
+    /// with a message naming the property (FreeCAD logs an exception thrown here as the
+    /// object's error) and asks for a recompute.
+    void onDocumentRestored() override;
 
 private:
     void initParameter(App::Property& property, const char* name);
     void setOutputs(const ExtractionOutputs& outputs);
+
+    /// Set by onDocumentRestored when the stored result is damaged, cleared by execute().
+    bool damagedOnRestore = false;
 };
 
 } // namespace FeatureLines

@@ -22,14 +22,7 @@ def _baseName(filename):
     return os.path.splitext(os.path.basename(filename))[0] or "Points"
 
 
-def insert(filename, docname):
-    """Adds the cloud of `filename` to the document named `docname` (created when missing) as a
-    Points feature and returns it. Raises ValueError naming the problem for a bad file."""
-    try:
-        doc = FreeCAD.getDocument(docname)
-    except NameError:
-        doc = FreeCAD.newDocument(docname)
-    kernel = FeatureLines.readCloud(filename)
+def _addCloud(doc, filename, kernel):
     cloud = doc.addObject("Points::Feature", _baseName(filename))
     cloud.Label = _baseName(filename)
     cloud.Points = kernel
@@ -37,8 +30,22 @@ def insert(filename, docname):
     return cloud
 
 
+def insert(filename, docname):
+    """Adds the cloud of `filename` to the document named `docname` (created when missing) as a
+    Points feature and returns it. Raises ValueError naming the problem for a bad file; the file
+    is read first, so a bad file adds nothing and creates no document."""
+    kernel = FeatureLines.readCloud(filename)
+    try:
+        doc = FreeCAD.getDocument(docname)
+    except NameError:
+        doc = FreeCAD.newDocument(docname)
+    return _addCloud(doc, filename, kernel)
+
+
 def open(filename):
-    """Opens `filename` in a new document named after the file and returns the document."""
+    """Opens `filename` in a new document named after the file and returns the document; a bad
+    file raises ValueError before any document is created."""
+    kernel = FeatureLines.readCloud(filename)
     doc = FreeCAD.newDocument(_baseName(filename))
-    insert(filename, doc.Name)
+    _addCloud(doc, filename, kernel)
     return doc

@@ -3,12 +3,15 @@
 
 #include "PropertyPointIndices.h"
 
+#include <Base/Exception.h>
 #include <Base/Reader.h>
 #include <Base/Stream.h>
 #include <Base/Writer.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 using namespace FeatureLines;
 
@@ -64,14 +67,29 @@ void PropertyPointIndices::SaveDocFile(Base::Writer& writer) const
 
 void PropertyPointIndices::RestoreDocFile(Base::Reader& reader)
 {
+    // A damaged file may end early or state any count: values are read while the file has
+    // them (no allocation from the stated count alone), and a short file restores nothing.
+    // FreeCAD reports the exception as "Reading failed from embedded file"; the empty list then
+    // disagrees with the others and the object says so (StoredResult.h).
+    setValues(std::vector<long>());
     Base::InputStream in(reader);
     std::uint32_t count = 0;
     in >> count;
-    std::vector<long> values(count);
-    for (long& v : values) {
+    std::vector<long> values;
+    values.reserve(std::min<std::uint32_t>(count, 1u << 20));
+    while (in && values.size() < count) {
         std::int32_t value = 0;
         in >> value;
-        v = value;
+        if (!in) {
+            break;
+        }
+        values.push_back(value);
+    }
+    if (values.size() != count) {
+        throw Base::FileException(("'" + std::string(getName()) + "' holds " +
+                                   std::to_string(values.size()) + " of its " +
+                                   std::to_string(count) + " values")
+                                      .c_str());
     }
     setValues(values);
 }

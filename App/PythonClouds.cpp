@@ -14,6 +14,7 @@
 #include "FeatureLines/io/CloudIO.h"
 #include "PythonModule.h"
 #include "PythonValues.h"
+#include "StoredResult.h"
 
 namespace FeatureLines {
 
@@ -34,7 +35,8 @@ void Module::addCloudFunctions()
         "region between the same two curvature thresholds), in a new group, so a patch can\n"
         "be handed to surface fitting. Patches of fewer than min_points points are left out\n"
         "(0: twice NeighbourCount, the fewest a surface fit can lean on); no group is made\n"
-        "when no patch is left.");
+        "when no patch is left. Raises ValueError naming the problem when the extraction\n"
+        "is out of date, failed its last recompute, or holds a damaged result.");
 }
 
 Py::Object Module::readCloud(const Py::Tuple& args)
@@ -66,12 +68,11 @@ Py::Object Module::makePatchClouds(const Py::Tuple& args, const Py::Dict& keywor
     if (!e) {
         throw Py::TypeError("makePatchClouds needs a FeatureLines::Extraction object");
     }
-    auto* source = dynamic_cast<Points::Feature*>(e->Source.getValue());
+    // The lists come from the last recompute or from the file: trusted only when current and
+    // consistent with one another and with the source.
+    requireCurrentResult(*e, "makePatchClouds");
+    auto* source = static_cast<Points::Feature*>(e->Source.getValue());
     const std::vector<long>& patch = e->PointPatch.getValues();
-    if (!source || source->Points.getValue().size() != patch.size() || patch.empty()) {
-        throw Py::ValueError("'" + std::string(e->Label.getValue()) +
-                             "' has no patches of its source cloud: recompute it first");
-    }
     if (minPoints <= 0) {
         minPoints = 2 * static_cast<int>(e->NeighbourCount.getValue());
     }

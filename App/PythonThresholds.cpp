@@ -16,6 +16,7 @@
 #include "InteractiveThresholds.h"
 #include "PythonModule.h"
 #include "PythonValues.h"
+#include "StoredResult.h"
 
 namespace FeatureLines {
 
@@ -66,6 +67,7 @@ std::vector<double> histogramValues(PyObject* source, PyObject* region)
 {
     std::vector<double> values;
     if (Extraction* e = extractionOf(source)) {
+        requireCurrentResult(*e, "histogram");
         const auto& curvature = e->PointCurvature.getValues();
         const auto& regions = e->PointRegion.getValues();
         const long wanted = region == Py_None ? -1 : Py::Long(region).as_long();
@@ -125,7 +127,8 @@ void Module::addThresholdFunctions()
         "dropped; below / above search the next lower / higher threshold (Sec. 2.3).\n"
         "Returns {'threshold', 'ratio', 'counts', 'minimum', 'maximum', 'bin_width',\n"
         "'start', 'joined_bins', 'peak', 'valley', 'outlier_cut'}. Raises ValueError when\n"
-        "the values have no valley to threshold.");
+        "the values have no valley to threshold, or when an Extraction is out of date,\n"
+        "failed its last recompute or holds a damaged result.");
     add_keyword_method(
         "regionHistogram", &Module::regionHistogramOf,
         "regionHistogram(extraction, region=0) -> dict\n"

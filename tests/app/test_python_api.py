@@ -240,6 +240,19 @@ class CloudFilesTest(unittest.TestCase):
         finally:
             support.close_document(opened)
 
+    def test_a_bad_file_imports_nothing(self):
+        import FeatureLinesImport
+
+        path = os.path.join(support.scratch_dir("bad-import"), "words.xyz")
+        with open(path, "w") as f:
+            f.write("1 2 3\nfour five six\n")
+        documents = set(FreeCAD.listDocuments())
+        with self.assertRaisesRegex(ValueError, r"words\.xyz, line 2"):
+            FeatureLinesImport.open(path)
+        with self.assertRaisesRegex(ValueError, r"words\.xyz, line 2"):
+            FeatureLinesImport.insert(path, "NotThere")
+        self.assertEqual(set(FreeCAD.listDocuments()), documents, "no empty document is left")
+
     def test_the_shipped_sample_imports(self):
         path = os.path.join(os.environ.get("FEATURELINES_SAMPLES", ""), "boss_blend.xyz")
         if not os.path.exists(path):
