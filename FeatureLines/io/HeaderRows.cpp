@@ -82,8 +82,18 @@ std::uint64_t listLength(const unsigned char* data, std::size_t size, bool bigEn
     return value;
 }
 
+/// The most bytes of padding a binary PCD may carry after its last point.
+constexpr std::uint64_t maxPadding = 64;
+
+/// True when `text` holds only line ends and blanks: what some writers leave after the last
+/// binary row (a final newline), which is no data row. NUL bytes are data (a zero float).
+bool onlyPadding(const std::string& text)
+{
+    return text.find_first_not_of(" \t\r\n") == std::string::npos;
+}
+
 /// Walks the binary rows of every element; throws naming the element whose rows run past the
-/// end of the file, or the last element when bytes are left over.
+/// end of the file, or the last element when bytes other than padding are left over.
 void checkBinaryPly(const std::string& path, std::istream& in, bool bigEndian,
                     const std::vector<PlyElement>& elements)
 {
@@ -113,7 +123,7 @@ void checkBinaryPly(const std::string& path, std::istream& in, bool bigEndian,
             }
         }
     }
-    if (at < data.size()) {
+    if (at < data.size() && !onlyPadding(data.substr(at))) {
         throw std::invalid_argument(path + ": the file goes on past the header's " +
                                     fieldsOf(elements) + " (" + std::to_string(data.size() - at) +
                                     " bytes more)");
@@ -230,7 +240,16 @@ void checkPcdRows(const std::string& path)
         const std::streamoff start = in.tellg();
         in.seekg(0, std::ios::end);
         const auto bytes = static_cast<std::uint64_t>(in.tellg() - start);
-        if (pointSize > 0 && bytes != points * pointSize) {
+        const std::uint64_t needed = points * pointSize;
+        if (pointSize > 0 && bytes > needed && bytes - needed <= maxPadding) {
+            std::string tail(static_cast<std::size_t>(bytes - needed), ' ');
+            in.seekg(start + static_cast<std::streamoff>(needed));
+            in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+            if (onlyPadding(tail)) {
+                return;
+            }
+        }
+        if (pointSize > 0 && bytes != needed) {
             throw std::invalid_argument(
                 path + ": the header says " + field + " (" + std::to_string(points * pointSize) +
                 " bytes of data), the file holds " + std::to_string(bytes) +

@@ -324,3 +324,24 @@ TEST_F(CloudIO, DataRowsMustMatchTheHeader)
         << readError(morePcd);
     EXPECT_NE(readError(write("fewer.pcd", pcd + "1 2 3\n")).find("'POINTS 2'"), std::string::npos);
 }
+
+TEST_F(CloudIO, ALineEndAfterTheLastBinaryRowIsNoRow)
+{
+    // Some writers end a binary file with a newline: padding, not a row; the point is read.
+    const float xyz[3] = {1.0f, 2.0f, 3.0f};
+    const std::string data(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    const std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 1\n"
+                            "property float x\nproperty float y\nproperty float z\nend_header\n";
+    const std::string pcd = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+                            "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binary\n";
+    for (const std::string& path :
+         {write("newline.ply", ply + data + "\n"), write("newline.pcd", pcd + data + "\r\n")}) {
+        const featurelines::PointMatrix P = featurelines::readCloud(path);
+        ASSERT_EQ(P.rows(), 1) << path;
+        EXPECT_EQ(P(0, 0), 1.0);
+        EXPECT_EQ(P(0, 2), 3.0);
+    }
+    // A byte that is no padding is still refused.
+    EXPECT_NE(readError(write("junk.ply", ply + data + "x")).find("goes on past"),
+              std::string::npos);
+}
