@@ -68,8 +68,8 @@ std::string noiseLabel(double noise)
     return fmt(noise, 1) + " h";
 }
 
-/// Rows "key | parts | mean and worst tenth of each measure", one per distinct key in order of
-/// first appearance; an "all" row first.
+/// Rows "key | parts | mean and worst tenth of each measure", one per distinct key in
+/// alphabetical order (noise levels ascending); an "all" row first.
 TextTable aggregateBy(const std::string& title, const std::string& keyName,
                       const std::vector<const RandomPartRecord*>& records,
                       const std::function<std::string(const RandomPartRecord&)>& key)
@@ -81,12 +81,14 @@ TextTable aggregateBy(const std::string& title, const std::string& keyName,
         table.header.push_back(m.name + " mean");
         table.header.push_back(m.name + " worst 10%");
     }
-    std::vector<std::string> keys = {"all"};
+    std::vector<std::string> keys;
     for (const RandomPartRecord* r : records) {
         if (std::find(keys.begin(), keys.end(), key(*r)) == keys.end()) {
             keys.push_back(key(*r));
         }
     }
+    std::sort(keys.begin(), keys.end());
+    keys.insert(keys.begin(), "all");
     for (const std::string& k : keys) {
         std::vector<const RandomPartRecord*> members;
         for (const RandomPartRecord* r : records) {
@@ -205,9 +207,10 @@ TextTable randomPartTable(const std::vector<RandomPartRecord>& records)
     TextTable table;
     table.title = "Random parts (noise in spacings h; scores at 3 h, F1 @1h at one spacing, "
                   "median distance in spacings)";
-    table.header = {"seed",         "group",         "family",      "model",  "noise",
-                    "points",       "sharp F1",      "smooth F1",   "bnd F1", "closed",
-                    "sharp F1 @1h", "smooth F1 @1h", "median dist", "lines",  "time s"};
+    table.header = {"seed",        "group",  "family",       "model",
+                    "noise",       "points", "sharp F1",     "smooth F1",
+                    "bnd F1",      "closed", "sharp F1 @1h", "smooth F1 @1h",
+                    "median dist", "lines",  "build s",      "time s"};
     for (const RandomPartRecord& r : records) {
         table.rows.push_back(
             {std::to_string(r.seed), r.group, r.family, r.model, fmt(r.noise, 1),
@@ -215,7 +218,7 @@ TextTable randomPartTable(const std::vector<RandomPartRecord>& records)
              fmt(f1Of(r.score, LineType::Smooth)), fmt(f1Of(r.score, LineType::Boundary)),
              fmt(r.score.closedness), fmt(f1Of(r.scoreAtOneSpacing, LineType::Sharp)),
              fmt(f1Of(r.scoreAtOneSpacing, LineType::Smooth)), fmt(r.quality.medianDistance, 2),
-             std::to_string(r.score.lineCount), fmt(r.seconds, 1)});
+             std::to_string(r.score.lineCount), fmt(r.buildSeconds, 1), fmt(r.seconds, 1)});
     }
     return table;
 }

@@ -28,7 +28,8 @@ struct RandomPartRecord
     long points = 0;
     /// Mean nearest spacing of the clean cloud (model units).
     double spacing = 0.0;
-    /// Extraction time (seconds).
+    /// Time to build the part, sample it and cut its truth; extraction time (seconds).
+    double buildSeconds = 0.0;
     double seconds = 0.0;
     /// At the benchmark's 3 h, at 1 h, and the line quality.
     LineScore score;

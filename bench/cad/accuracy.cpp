@@ -984,6 +984,7 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
                        std::vector<RandomPartRecord>& records)
 {
     std::cerr << "random part " << seed << ": building" << std::endl;
+    const auto buildStart = std::chrono::steady_clock::now();
     RandomPartOptions partOptions;
     partOptions.points = args.pointsGiven ? args.points : 0.0;
     const RandomPart part = makeRandomPart(seed, partOptions);
@@ -1003,6 +1004,7 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     record.noise = scan.normalNoise;
     record.points = static_cast<long>(cloud.points.rows());
     record.spacing = cloud.spacing;
+    record.buildSeconds = seconds(buildStart);
     const std::string name = "seed " + std::to_string(seed);
     const std::string noise = fmt(scan.normalNoise, 1) + "h";
     std::cerr << "random part " << seed << ": " << part.familyName << ", " << record.model << ", "
