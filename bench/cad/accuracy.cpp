@@ -3,7 +3,9 @@
 //
 // For every part (CadShapes.h), clean and with noise along the normal: sample a scan-like
 // cloud (ShapeSampling.h), take the typed edges of the B-rep as truth, run every detector,
-// and score it (LineScore.h): precision, recall and F1 per edge type, closedness. Method and
+// and score it (LineScore.h): precision, recall and F1 per edge type, closedness. With
+// --random, the random parts instead (PartFamilies.h), each sampled by its drawn scanner model
+// (ScanSampling.h) and aggregated per family, model and noise (RandomBenchmark.h). Method and
 // results: docs/ACCURACY.md.
 #include <algorithm>
 #include <chrono>
@@ -242,6 +244,11 @@ Arguments parseArguments(int argc, char** argv)
     }
     if (!(a.points >= 100.0)) {
         throw std::invalid_argument("--points must be at least 100.");
+    }
+    const bool floorGiven = !std::isnan(a.floors.sharpF1) || !std::isnan(a.floors.smoothF1) ||
+                            !std::isnan(a.floors.closedness);
+    if (floorGiven && a.randomSeeds.empty()) {
+        throw std::invalid_argument("--floor applies to the random parts: give --random too.");
     }
     if (a.spacingFraction < 0.0 || a.spacingFraction > 0.1) {
         throw std::invalid_argument("--spacing-fraction must lie between 0 and 0.1.");
