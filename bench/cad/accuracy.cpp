@@ -3,11 +3,14 @@
 //
 // For every part (CadShapes.h), clean and with noise along the normal: sample a scan-like
 // cloud (ShapeSampling.h), take the typed edges of the B-rep as truth, run every detector,
-// and score it (LineScore.h): precision, recall and F1 per edge type, closedness. Method and
+// and score it (LineScore.h): precision, recall and F1 per edge type, closedness. With
+// --random, the random parts instead (PartFamilies.h), each sampled by its drawn scanner model
+// (ScanSampling.h) and aggregated per family, model and noise (RandomBenchmark.h). Method and
 // results: docs/ACCURACY.md.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +32,9 @@
 #include "CadFiles.h"
 #include "CadShapes.h"
 #include "LineScore.h"
+#include "PartFamilies.h"
+#include "RandomBenchmark.h"
+#include "ScanSampling.h"
 #include "ShapeSampling.h"
 #include "VcmBaseline.h"
 
@@ -80,6 +86,12 @@ struct Arguments
     std::vector<std::string> shapes = allShapeNames();
     /// Points per part; the sampling radius follows from the part's area.
     double points = 50000.0;
+    /// --points was given: random parts are sized for it instead of their drawn count.
+    bool pointsGiven = false;
+    /// --random: the seeds of the random parts to measure instead of the built-in parts.
+    std::vector<std::uint32_t> randomSeeds;
+    /// --floor: lowest acceptable means over the random parts (exit 1 below).
+    RandomFloors floors;
     /// When > 0: sampling radius as this fraction of the part's bounding-box diagonal
     /// (overrides `points`).
     double spacingFraction = 0.0;
@@ -190,6 +202,11 @@ Arguments parseArguments(int argc, char** argv)
             a.shapes = list == "none" ? std::vector<std::string>{} : splitComma(list);
         } else if (opt == "--points") {
             a.points = parseNumber(value(), opt);
+            a.pointsGiven = true;
+        } else if (opt == "--random") {
+            a.randomSeeds = parseSeedList(value());
+        } else if (opt == "--floor") {
+            a.floors = parseFloors(value());
         } else if (opt == "--spacing-fraction") {
             a.spacingFraction = parseNumber(value(), opt);
         } else if (opt == "--noise-sigma") {
@@ -227,6 +244,11 @@ Arguments parseArguments(int argc, char** argv)
     }
     if (!(a.points >= 100.0)) {
         throw std::invalid_argument("--points must be at least 100.");
+    }
+    const bool floorGiven = !std::isnan(a.floors.sharpF1) || !std::isnan(a.floors.smoothF1) ||
+                            !std::isnan(a.floors.closedness);
+    if (floorGiven && a.randomSeeds.empty()) {
+        throw std::invalid_argument("--floor applies to the random parts: give --random too.");
     }
     if (a.spacingFraction < 0.0 || a.spacingFraction > 0.1) {
         throw std::invalid_argument("--spacing-fraction must lie between 0 and 0.1.");
@@ -831,7 +853,7 @@ void printScores(const Results& results, bool markdown)
     // then the real CAD parts.
     std::vector<std::vector<std::string>> means;
     std::vector<std::tuple<std::string, std::string, std::string>> keys;
-    for (const char* group : {"measured", "held-out", "real"}) {
+    for (const char* group : {"measured", "held-out", "real", "tuning", "other"}) {
         for (const Row& r : results.rows) {
             const auto key = std::make_tuple(std::string(group), r.detector, r.noise);
             if (r.group == group && std::find(keys.begin(), keys.end(), key) == keys.end()) {
@@ -930,8 +952,132 @@ void writeDemoCloud(const Arguments& args)
               << " points, spacing " << meanNearestSpacing(demo.points) << ")\n";
 }
 
+// ---------------------------------------------------------------------------------------------
+// Random parts (--random): one part per seed, one cloud by its drawn scanner model.
+
+/// How far from the cloud a true edge still counts as seen (truthCoveredBy): the metric's
+/// tolerance, and for the scan models one and a half row gaps, so that an edge running along
+/// the rows between two of them is kept (tests/bench/test_scan_sampling.cpp).
+double coveringDistance(const ScanOptions& scan, const ScannedCloud& cloud)
+{
+    const double tolerance = LineScoreOptions{}.toleranceFactor * cloud.spacing;
+    const bool rows = scan.model == ScanModel::ScanLines || scan.model == ScanModel::MergedViews;
+    return rows ? std::max(tolerance, 1.5 * scan.rowSpacingRatio * cloud.rowStep) : tolerance;
+}
+
+/// The true edges of `part` that `cloud` sees: cut to the reach of its points, outliers left
+/// out (a point 20 spacings off the surface sees nothing).
+std::vector<TypedPolyline> coveredTruth(const RandomPart& part, const ScanOptions& scan,
+                                        const ScannedCloud& cloud)
+{
+    TruthOptions truthOptions;
+    truthOptions.step = 0.5 * cloud.spacing;
+    const std::vector<TypedPolyline> truth = truthEdges(part.shape, truthOptions);
+    PointMatrix seen(cloud.points.rows(), 3);
+    Eigen::Index rows = 0;
+    for (Eigen::Index i = 0; i < cloud.points.rows(); ++i) {
+        if (!cloud.outlier[static_cast<size_t>(i)]) {
+            seen.row(rows++) = cloud.points.row(i);
+        }
+    }
+    seen.conservativeResize(rows, 3);
+    return truthCoveredBy(truth, seen, coveringDistance(scan, cloud));
+}
+
+/// Builds the part of `seed`, samples it by its drawn scanner model, runs the extraction (and
+/// the baselines) and scores them against the covered truth; the extraction's record joins
+/// `records`, every detector's row `results`.
+void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& results,
+                       std::vector<RandomPartRecord>& records)
+{
+    std::cerr << "random part " << seed << ": building" << std::endl;
+    const auto buildStart = std::chrono::steady_clock::now();
+    RandomPartOptions partOptions;
+    partOptions.points = args.pointsGiven ? args.points : 0.0;
+    const RandomPart part = makeRandomPart(seed, partOptions);
+    ScanOptions scan = drawScanOptions(seed);
+    scan.points = part.targetPoints; // the part is sized for its count at spacing 1
+    const ScannedCloud cloud = sampleLikeAScanner(part.shape, scan);
+    SampledPart s;
+    s.seed = seed;
+    s.spacing = cloud.spacing;
+    s.truth = coveredTruth(part, scan, cloud);
+
+    RandomPartRecord record;
+    record.seed = seed;
+    record.group = randomGroupOfSeed(seed);
+    record.family = part.familyName;
+    record.model = scanModelName(scan.model);
+    record.noise = scan.normalNoise;
+    record.points = static_cast<long>(cloud.points.rows());
+    record.spacing = cloud.spacing;
+    record.buildSeconds = seconds(buildStart);
+    const std::string name = "seed " + std::to_string(seed);
+    const std::string noise = fmt(scan.normalNoise, 1) + "h";
+    std::cerr << "random part " << seed << ": " << part.familyName << ", " << record.model << ", "
+              << record.points << " points, noise " << noise << std::endl;
+
+    const auto start = std::chrono::steady_clock::now();
+    const auto lines = runFeatureLines(cloud.points);
+    Row row = lineRow(name, noise, "featurelines", *lines, s);
+    row.seconds = seconds(start);
+    row.group = record.group;
+    results.rows.push_back(row);
+    record.seconds = row.seconds;
+    record.score = row.score;
+    record.scoreAtOneSpacing = row.scoreAtOneSpacing;
+    record.quality = row.quality;
+    records.push_back(record);
+    if (args.baselines) {
+        SampledCloud plain;
+        plain.points = cloud.points;
+        plain.normals = cloud.normals;
+        runBaselines(name, noise, record.group, plain, s, results);
+    }
+}
+
+void printTextTable(const TextTable& table, bool markdown)
+{
+    std::cout << (markdown ? "**" + table.title + "**\n\n" : table.title + "\n");
+    printTable(table.header, table.rows, markdown);
+}
+
+/// --random: the random parts, their tables, and the floors' verdict (exit 1 below one).
+int runRandom(const Arguments& args)
+{
+    Results results;
+    std::vector<RandomPartRecord> records;
+    for (const std::uint32_t seed : args.randomSeeds) {
+        try {
+            measureRandomPart(seed, args, results, records);
+        } catch (const std::runtime_error& e) {
+            std::cerr << "random part " << seed << ": not measured: " << e.what() << std::endl;
+        }
+    }
+    printTextTable(randomPartTable(records), args.markdown);
+    if (args.baselines) {
+        printScores(results, args.markdown);
+    }
+    printLineQuality(results, args.markdown);
+    for (const TextTable& table : randomAggregateTables(records)) {
+        printTextTable(table, args.markdown);
+    }
+    const RandomMeans means = randomMeans(records);
+    const std::vector<std::string> failures = floorFailures(means, args.floors);
+    std::cout << "mean over the " << records.size() << " random parts: sharp F1 "
+              << fmt(means.sharpF1) << ", smooth F1 " << fmt(means.smoothF1) << ", closedness "
+              << fmt(means.closedness) << "\n";
+    for (const std::string& f : failures) {
+        std::cout << "below the floor: " << f << "\n";
+    }
+    return failures.empty() ? 0 : 1;
+}
+
 int run(const Arguments& args)
 {
+    if (!args.randomSeeds.empty()) {
+        return runRandom(args);
+    }
     Results results;
     const auto names = allShapeNames();
     for (const std::string& name : args.shapes) {
