@@ -12,16 +12,6 @@ namespace featurelines::bench {
 
 namespace {
 
-std::string fmt(double v, int decimals = 3)
-{
-    if (std::isnan(v)) {
-        return "-";
-    }
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
 double f1Of(const LineScore& s, LineType t)
 {
     const TypeScore& ts = s.types[static_cast<size_t>(t)];
@@ -65,7 +55,7 @@ const std::vector<Measure>& measures()
 
 std::string noiseLabel(double noise)
 {
-    return fmt(noise, 1) + " h";
+    return formatNumber(noise, 1) + " h";
 }
 
 /// Rows "key | parts | mean and worst tenth of each measure", one per distinct key in
@@ -103,30 +93,17 @@ TextTable aggregateBy(const std::string& title, const std::string& keyName,
                 values.push_back(m.value(*r));
             }
             const int decimals = m.higherIsWorse ? 2 : 3;
-            cells.push_back(fmt(meanOfDefined(values), decimals));
-            cells.push_back(fmt(worstTenthMean(values, m.higherIsWorse), decimals));
+            cells.push_back(formatNumber(meanOfDefined(values), decimals));
+            cells.push_back(formatNumber(worstTenthMean(values, m.higherIsWorse), decimals));
         }
         table.rows.push_back(cells);
     }
     return table;
 }
 
-double parseValue(const std::string& text, const std::string& what)
-{
-    try {
-        size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(v)) {
-            return v;
-        }
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(what + " expects a number, not \"" + text + "\".");
-}
-
 std::uint32_t parseSeed(const std::string& text)
 {
-    const double v = parseValue(text, "--random");
+    const double v = parseNumber(text, "--random");
     if (v < 0.0 || v > 4294967295.0 || v != std::floor(v)) {
         throw std::invalid_argument("--random expects seeds from 0 to 4294967295, not \"" + text +
                                     "\".");
@@ -146,6 +123,29 @@ std::vector<std::string> splitAt(const std::string& text, char separator)
 }
 
 } // namespace
+
+std::string formatNumber(double v, int decimals)
+{
+    if (std::isnan(v)) {
+        return "-";
+    }
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+double parseNumber(const std::string& text, const std::string& what)
+{
+    try {
+        size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(v)) {
+            return v;
+        }
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument(what + " expects a number, not \"" + text + "\".");
+}
 
 std::string randomGroupOfSeed(std::uint32_t seed)
 {
@@ -213,12 +213,14 @@ TextTable randomPartTable(const std::vector<RandomPartRecord>& records)
                     "median dist", "lines",  "build s",      "time s"};
     for (const RandomPartRecord& r : records) {
         table.rows.push_back(
-            {std::to_string(r.seed), r.group, r.family, r.model, fmt(r.noise, 1),
-             std::to_string(r.points), fmt(f1Of(r.score, LineType::Sharp)),
-             fmt(f1Of(r.score, LineType::Smooth)), fmt(f1Of(r.score, LineType::Boundary)),
-             fmt(r.score.closedness), fmt(f1Of(r.scoreAtOneSpacing, LineType::Sharp)),
-             fmt(f1Of(r.scoreAtOneSpacing, LineType::Smooth)), fmt(r.quality.medianDistance, 2),
-             std::to_string(r.score.lineCount), fmt(r.buildSeconds, 1), fmt(r.seconds, 1)});
+            {std::to_string(r.seed), r.group, r.family, r.model, formatNumber(r.noise, 1),
+             std::to_string(r.points), formatNumber(f1Of(r.score, LineType::Sharp)),
+             formatNumber(f1Of(r.score, LineType::Smooth)),
+             formatNumber(f1Of(r.score, LineType::Boundary)), formatNumber(r.score.closedness),
+             formatNumber(f1Of(r.scoreAtOneSpacing, LineType::Sharp)),
+             formatNumber(f1Of(r.scoreAtOneSpacing, LineType::Smooth)),
+             formatNumber(r.quality.medianDistance, 2), std::to_string(r.score.lineCount),
+             formatNumber(r.buildSeconds, 1), formatNumber(r.seconds, 1)});
     }
     return table;
 }
@@ -268,7 +270,7 @@ RandomFloors parseFloors(const std::string& text)
         if (eq == std::string::npos) {
             throw std::invalid_argument("--floor expects name=value, not \"" + item + "\".");
         }
-        const double value = parseValue(item.substr(eq + 1), "--floor " + name);
+        const double value = parseNumber(item.substr(eq + 1), "--floor " + name);
         if (name == "sharp") {
             floors.sharpF1 = value;
         } else if (name == "smooth") {
@@ -288,8 +290,8 @@ std::vector<std::string> floorFailures(const RandomMeans& means, const RandomFlo
     std::vector<std::string> failures;
     const auto check = [&](const char* name, double mean, double floor) {
         if (!std::isnan(floor) && !(mean >= floor)) {
-            failures.push_back(std::string("mean ") + name + " " + fmt(mean) +
-                               " is below its floor " + fmt(floor) + ".");
+            failures.push_back(std::string("mean ") + name + " " + formatNumber(mean) +
+                               " is below its floor " + formatNumber(floor) + ".");
         }
     };
     check("sharp F1", means.sharpF1, floors.sharpF1);

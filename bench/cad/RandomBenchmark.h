@@ -41,6 +41,12 @@ struct RandomPartRecord
 /// docs/ACCURACY.md, "Random parts").
 std::string randomGroupOfSeed(std::uint32_t seed);
 
+/// `v` with `decimals` decimals, "-" for NaN: every number of the benchmark's tables.
+std::string formatNumber(double v, int decimals = 3);
+
+/// The finite number `text` is, whole; else std::invalid_argument "<what> expects a number".
+double parseNumber(const std::string& text, const std::string& what);
+
 /// "A-B" ranges and single seeds, comma separated ("0-47,1000"), in the order given. Throws
 /// std::invalid_argument on anything else or a range whose end precedes its start.
 std::vector<std::uint32_t> parseSeedList(const std::string& text);

@@ -160,19 +160,6 @@ SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
     return cloud;
 }
 
-double parseNumber(const std::string& text, const std::string& option)
-{
-    try {
-        size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(v)) {
-            return v;
-        }
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(option + " expects a number, not \"" + text + "\".");
-}
-
 std::vector<std::string> splitComma(const std::string& text)
 {
     std::vector<std::string> parts;
@@ -541,16 +528,6 @@ struct Row
     LineQuality quality;
 };
 
-std::string fmt(double v, int decimals = 3)
-{
-    if (std::isnan(v)) {
-        return "-";
-    }
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
 void printTable(const std::vector<std::string>& header,
                 const std::vector<std::vector<std::string>>& rows, bool markdown)
 {
@@ -599,9 +576,9 @@ std::vector<std::string> scoreCells(const LineScore& s, bool available)
     std::vector<std::string> cells;
     for (int t = 0; t < lineTypeCount; ++t) {
         const TypeScore& ts = s.types[static_cast<size_t>(t)];
-        cells.push_back(available ? fmt(ts.precision) : "-");
-        cells.push_back(available ? fmt(ts.recall) : "-");
-        cells.push_back(available ? fmt(ts.f1) : "-");
+        cells.push_back(available ? formatNumber(ts.precision) : "-");
+        cells.push_back(available ? formatNumber(ts.recall) : "-");
+        cells.push_back(available ? formatNumber(ts.f1) : "-");
     }
     return cells;
 }
@@ -715,11 +692,11 @@ SampledPart samplePart(const CadShape& part, unsigned seed, const Arguments& arg
         ++edgeCount[static_cast<size_t>(l.type)];
     }
     results.partRows.push_back(
-        {part.name, std::to_string(s.clean.points.rows()), fmt(s.spacing, 3),
-         fmt(sampling.radius, 3),
-         part.smallestRadius > 0 ? fmt(part.smallestRadius / s.spacing, 1) : "-",
+        {part.name, std::to_string(s.clean.points.rows()), formatNumber(s.spacing, 3),
+         formatNumber(sampling.radius, 3),
+         part.smallestRadius > 0 ? formatNumber(part.smallestRadius / s.spacing, 1) : "-",
          std::to_string(edgeCount[0]), std::to_string(edgeCount[1]), std::to_string(edgeCount[2]),
-         fmt(seconds(buildStart), 1)});
+         formatNumber(seconds(buildStart), 1)});
     return s;
 }
 
@@ -751,7 +728,7 @@ void runBaselines(const std::string& name, const std::string& noise, const std::
                               const std::function<std::vector<double>()>& values) {
         const auto start = std::chrono::steady_clock::now();
         const std::vector<double> v = values();
-        Row row(name, noise, label + " > " + fmt(fixed, fixed < 1 ? 2 : 0));
+        Row row(name, noise, label + " > " + formatNumber(fixed, fixed < 1 ? 2 : 0));
         row.group = group;
         row.seconds = seconds(start);
         row.available = true;
@@ -841,10 +818,10 @@ void printScores(const Results& results, bool markdown)
         std::vector<std::string> cells = {r.shape, r.noise, r.detector};
         const auto sc = scoreCells(r.score, r.available);
         cells.insert(cells.end(), sc.begin(), sc.end());
-        cells.push_back(r.available && !r.perPoint ? fmt(r.score.closedness) : "-");
-        cells.push_back(r.available && !r.perPoint ? fmt(r.score.sharpClosedness) : "-");
+        cells.push_back(r.available && !r.perPoint ? formatNumber(r.score.closedness) : "-");
+        cells.push_back(r.available && !r.perPoint ? formatNumber(r.score.sharpClosedness) : "-");
         cells.push_back(r.available && !r.perPoint ? std::to_string(r.score.lineCount) : "-");
-        cells.push_back(r.available ? fmt(r.seconds, 2) : "-");
+        cells.push_back(r.available ? formatNumber(r.seconds, 2) : "-");
         table.push_back(cells);
     }
     printTable(header, table, markdown);
@@ -877,8 +854,8 @@ void printScores(const Results& results, bool markdown)
         const LineScore m = available ? meanScore(members) : LineScore{};
         const auto sc = scoreCells(m, available);
         cells.insert(cells.end(), sc.begin(), sc.end());
-        cells.push_back(available && !perPoint ? fmt(m.closedness) : "-");
-        cells.push_back(available && !perPoint ? fmt(m.sharpClosedness) : "-");
+        cells.push_back(available && !perPoint ? formatNumber(m.closedness) : "-");
+        cells.push_back(available && !perPoint ? formatNumber(m.sharpClosedness) : "-");
         cells.push_back("-");
         cells.push_back("-");
         means.push_back(cells);
@@ -901,13 +878,13 @@ void printLineQuality(const Results& results, bool markdown)
         }
         const LineQuality& q = r.quality;
         const auto f1 = [&](LineType t) {
-            return fmt(r.scoreAtOneSpacing.types[static_cast<size_t>(t)].f1);
+            return formatNumber(r.scoreAtOneSpacing.types[static_cast<size_t>(t)].f1);
         };
         table.push_back({r.shape, r.noise, r.detector, f1(LineType::Sharp), f1(LineType::Smooth),
-                         fmt(q.medianDistance, 2), fmt(q.p95Distance, 2),
-                         fmt(q.confusionShare(LineType::Sharp, LineType::Smooth)),
-                         fmt(q.confusionShare(LineType::Smooth, LineType::Sharp)),
-                         fmt(q.boundaryLength, 1), fmt(q.linesPerTrueEdge, 2),
+                         formatNumber(q.medianDistance, 2), formatNumber(q.p95Distance, 2),
+                         formatNumber(q.confusionShare(LineType::Sharp, LineType::Smooth)),
+                         formatNumber(q.confusionShare(LineType::Smooth, LineType::Sharp)),
+                         formatNumber(q.boundaryLength, 1), formatNumber(q.linesPerTrueEdge, 2),
                          std::to_string(q.freeEnds)});
     }
     if (table.empty()) {
@@ -927,8 +904,10 @@ void printSweeps(const Results& results, bool markdown)
 {
     std::vector<std::vector<std::string>> sweepRows;
     for (const SweepResult& s : results.sweeps) {
-        sweepRows.push_back({s.baseline, s.noise, fmt(s.threshold, s.threshold < 1 ? 3 : 0),
-                             fmt(meanOf(s.f1[0])), fmt(meanOf(s.f1[1])), fmt(meanOf(s.f1[2]))});
+        sweepRows.push_back({s.baseline, s.noise,
+                             formatNumber(s.threshold, s.threshold < 1 ? 3 : 0),
+                             formatNumber(meanOf(s.f1[0])), formatNumber(meanOf(s.f1[1])),
+                             formatNumber(meanOf(s.f1[2]))});
     }
     if (sweepRows.empty()) {
         return;
@@ -1013,7 +992,7 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     record.spacing = cloud.spacing;
     record.buildSeconds = seconds(buildStart);
     const std::string name = "seed " + std::to_string(seed);
-    const std::string noise = fmt(scan.normalNoise, 1) + "h";
+    const std::string noise = formatNumber(scan.normalNoise, 1) + "h";
     std::cerr << "random part " << seed << ": " << part.familyName << ", " << record.model << ", "
               << record.points << " points, noise " << noise << std::endl;
 
@@ -1065,8 +1044,8 @@ int runRandom(const Arguments& args)
     const RandomMeans means = randomMeans(records);
     const std::vector<std::string> failures = floorFailures(means, args.floors);
     std::cout << "mean over the " << records.size() << " random parts: sharp F1 "
-              << fmt(means.sharpF1) << ", smooth F1 " << fmt(means.smoothF1) << ", closedness "
-              << fmt(means.closedness) << "\n";
+              << formatNumber(means.sharpF1) << ", smooth F1 " << formatNumber(means.smoothF1)
+              << ", closedness " << formatNumber(means.closedness) << "\n";
     for (const std::string& f : failures) {
         std::cout << "below the floor: " << f << "\n";
     }
