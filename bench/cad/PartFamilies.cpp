@@ -411,9 +411,32 @@ bool roundOnce(PartBuild& build, TopoDS_Shape& shape, const std::vector<Rounding
     return false;
 }
 
+/// True when a face of `shape` bounded by `edge` is not analytic (a B-spline, Bezier or offset
+/// surface, as the freeform family's lofts).
+bool touchesFreeformFace(const TopoDS_Shape& shape, const TopoDS_Edge& edge)
+{
+    TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
+    const int index = facesOfEdge.FindIndex(edge);
+    if (index == 0) {
+        return false;
+    }
+    for (const TopoDS_Shape& face : facesOfEdge(index)) {
+        const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(face)).GetType();
+        if (type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface ||
+            type == GeomAbs_OffsetSurface || type == GeomAbs_OtherSurface) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /// Tries the roundings with the retry ladder of RandomPartOptions::roundingTries: as drawn,
 /// sizes halved, then half the edges, a quarter, ...; the last try takes each edge alone at
 /// the smallest size until one works. Returns the try that worked (0 = as drawn) or -1.
+/// The last try leaves out edges of freeform faces: a rounding of the smallest size along a
+/// lofted B-spline face can keep OpenCASCADE's blend approximation busy for many minutes
+/// (random part 71 at 50 000 points), so the ladder ends by a rule of the shape, not a timer.
 int applyRoundings(PartBuild& build, TopoDS_Shape& shape, const std::vector<Rounding>& roundings,
                    bool chamfer)
 {
@@ -421,6 +444,9 @@ int applyRoundings(PartBuild& build, TopoDS_Shape& shape, const std::vector<Roun
     for (int attempt = 0; attempt < tries; ++attempt) {
         if (attempt > 0 && attempt == tries - 1) {
             for (const Rounding& r : roundings) {
+                if (touchesFreeformFace(shape, r.edge)) {
+                    continue;
+                }
                 if (roundOnce(build, shape, {r}, chamfer, 0.0)) {
                     return attempt;
                 }
