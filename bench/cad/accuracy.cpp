@@ -125,6 +125,7 @@ const char* usage =
     "                          irregular sampling, as of a thinned or patchy scan\n"
     "  --seed S                seed of sampling, thinning and noise (default 1)\n"
     "  --write DIR             write DIR/<part>-<clean|noisy>/cloud.xyz and truth.json\n"
+    "                          (random parts: DIR/random-<seed>/)\n"
     "  --lines DIR             also score DIR/<part>-<clean|noisy>/lines.json (the lines JSON\n"
     "                          of any detector, e.g. the featurelines CLI run on cloud.xyz)\n"
     "  --step-dir DIR          also measure every STEP, IGES or BREP model in DIR (real\n"
@@ -995,6 +996,14 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     const std::string noise = formatNumber(scan.normalNoise, 1) + "h";
     std::cerr << "random part " << seed << ": " << part.familyName << ", " << record.model << ", "
               << record.points << " points, noise " << noise << std::endl;
+
+    if (!args.writeDir.empty()) {
+        const std::filesystem::path dir =
+            std::filesystem::path(args.writeDir) / ("random-" + std::to_string(seed));
+        std::filesystem::create_directories(dir);
+        writeXyz((dir / "cloud.xyz").string(), cloud.points, 9);
+        writeLinesJson((dir / "truth.json").string(), s.truth, name, s.spacing);
+    }
 
     const auto start = std::chrono::steady_clock::now();
     const auto lines = runFeatureLines(cloud.points);
