@@ -37,6 +37,7 @@
 #include "AnalysisRun.h"
 #include "ExtractionFeature.h"
 #include "ExtractionParameters.h"
+#include "FeatureLines/cli/Progress.h"
 #include "HistogramWidget.h"
 #include "PointPreview.h"
 #include "ViewProviderExtraction.h"
@@ -287,12 +288,11 @@ void TaskExtraction::connectWidgets()
     connect(o.buttonRun, &QPushButton::clicked, this, [this] { startRun(); });
     connect(o.buttonCancelRun, &QPushButton::clicked, this, [this] {
         run->cancel();
+        cancelling = true;
         optionsUi->labelStatus->setText(tr("Cancelling at the next stage..."));
     });
-    connect(run, &AnalysisRun::progressed, this, [this](int percent, const QString& stage) {
-        optionsUi->progressBar->setValue(percent);
-        optionsUi->progressBar->setFormat(stage + QLatin1String(" %p%"));
-    });
+    connect(run, &AnalysisRun::progressed, this,
+            [this](int percent, const QString& stage) { showProgress(percent, stage); });
     connect(run, &AnalysisRun::finished, this, [this] { runFinished(); });
 
     connect(t.buttonAccept, &QPushButton::clicked, this, [this] { acceptCandidate(); });
@@ -338,10 +338,31 @@ void TaskExtraction::startRun()
     }
     optionsUi->labelStatus->setText(tr("Analysing the cloud..."));
     optionsUi->progressBar->setValue(0);
+    // The bar shows the share only: the stage's name goes into the status line below it, which
+    // wraps in a narrow panel.
     optionsUi->progressBar->setFormat(QLatin1String("%p%"));
+    runClock.start();
+    cancelling = false;
     setRunning(true);
     setRunState("running");
     run->start(std::move(in));
+}
+
+void TaskExtraction::showProgress(int percent, const QString& stage)
+{
+    optionsUi->progressBar->setValue(percent);
+    if (cancelling) {
+        return; // "Cancelling..." stays until the run stops
+    }
+    const double left =
+        featurelines::cli::secondsLeft(percent / 100.0, runClock.elapsed() / 1000.0);
+    QString text = tr("Analysing: %1").arg(stage);
+    if (std::isfinite(left)) {
+        text += left < 60.0
+                    ? tr(", about %1 s left").arg(std::max(1L, std::lround(std::ceil(left))))
+                    : tr(", about %1 min left").arg(std::lround(std::ceil(left / 60.0)));
+    }
+    optionsUi->labelStatus->setText(text);
 }
 
 void TaskExtraction::setRunning(bool running)

@@ -25,6 +25,7 @@
 #include <Base/Vector3D.h>
 #include <Gui/TaskView/TaskDialog.h>
 
+#include <QElapsedTimer>
 #include <QString>
 
 #include <map>
@@ -105,6 +106,8 @@ private:
     void startRun();
     void runFinished();
     void setRunning(bool running);
+    /// The bar at `percent`, the stage and the time left (secondsLeft) in the status line.
+    void showProgress(int percent, const QString& stage);
     void setRunState(const char* state);
     void adoptAnalysis();
     void initialiseRegions();
@@ -150,6 +153,9 @@ private:
     std::map<std::string, QWidget*> optionWidgets;
 
     AnalysisRun* run = nullptr;
+    /// Time since the run started, for the time left; whether Cancel run was pressed.
+    QElapsedTimer runClock;
+    bool cancelling = false;
     bool analysed = false;
     bool regionsInitialised = false;
     FeatureLines::CloudAnalysis analysis;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -23,17 +24,27 @@ inline std::string timeLeftText(double seconds)
     return "about " + std::to_string(std::lround(std::ceil(seconds / 60.0))) + " min left";
 }
 
-/// "NAME: 40% sharp edges, about 12 s left". The time left is the time so far scaled by the
-/// share still to do; it is left out until a second has passed and a share of 2% is done,
-/// before which the rate says nothing.
+/// The seconds still to go when `share` (0..1) of the work took `elapsedSeconds`: the time so
+/// far scaled by the share still to do. NaN until a second has passed and 2% are done, before
+/// which the rate says nothing, and once all is done. (The task panel shows it too.)
+inline double secondsLeft(double share, double elapsedSeconds)
+{
+    if (!(share >= 0.02 && share < 1.0 && elapsedSeconds >= 1.0)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return elapsedSeconds * (1.0 - share) / share;
+}
+
+/// "NAME: 40% sharp edges, about 12 s left" (secondsLeft; no time before it is known).
 inline std::string progressLine(const std::string& name, double done, const std::string& stage,
                                 double elapsedSeconds)
 {
     const double share = std::min(1.0, std::max(0.0, done));
     std::string line =
         name + ": " + std::to_string(static_cast<int>(std::floor(100.0 * share))) + "% " + stage;
-    if (share >= 0.02 && share < 1.0 && elapsedSeconds >= 1.0) {
-        line += ", " + timeLeftText(elapsedSeconds * (1.0 - share) / share);
+    const double left = secondsLeft(share, elapsedSeconds);
+    if (std::isfinite(left)) {
+        line += ", " + timeLeftText(left);
     }
     return line;
 }

@@ -53,6 +53,7 @@ def first_candidate():
     g.check("low" in g.label("labelLegend"), "the label colours are explained")
     g.check(not g.button("buttonBack").isVisible(), "nothing accepted yet to go back to")
     g.check(not state["cloud"].ViewObject.isVisible(), "the preview replaces the cloud's view")
+    g.check_panel_fits("stage (a), both boxes open")
     state["first"] = c
 
 
@@ -74,10 +75,11 @@ def lower():
     g.check(FILLET < c < CORNER, "Higher from there finds the corner valley again: %g" % c)
     state["tau1"] = c
     g.check("inner" in g.label("labelStage"), "the stage text counts the labels")
-    # The thresholds box whole on a 900-pixel screen: the analysis box folded, as a user
+    # The thresholds box whole on a 768-pixel screen: the analysis box folded, as a user
     # folds it once the cloud is analysed.
     g.fold_task_box("TaskExtractionOptions")
     g.settle(1.5)  # the box folds in an animation
+    g.check_panel_fits("stage (a), the analysis box folded")
     g.screenshot("rounded_cube_labels")
 
 
@@ -103,6 +105,11 @@ def accept_corner_threshold():
     g.check(g.stage() == "b", "stage (b) after Accept")
     g.check(g.button("buttonDone").isVisible(), "Done is offered")
     g.check("8 smooth line(s), 8 closed" in g.label("labelStage"), g.label("labelStage"))
+    g.check_panel_fits("stage (b)")
+    # Narrower still, as the paper-width panel of FreeCAD's smaller layouts: 230 pixels.
+    g.narrow_combo_view(230)
+    g.check_panel_fits("stage (b), 230 px")
+    g.screenshot("rounded_cube_stage_b_230px")
 
 
 def add_lower():
