@@ -296,8 +296,8 @@ void TaskExtraction::connectWidgets()
     connect(run, &AnalysisRun::finished, this, [this] { runFinished(); });
 
     connect(t.buttonAccept, &QPushButton::clicked, this, [this] { acceptCandidate(); });
-    connect(t.buttonLower, &QPushButton::clicked, this, [this] { lowerCandidate(); });
-    connect(t.buttonHigher, &QPushButton::clicked, this, [this] { higherCandidate(); });
+    connect(t.buttonLower, &QPushButton::clicked, this, [this] { stepCandidate(false); });
+    connect(t.buttonHigher, &QPushButton::clicked, this, [this] { stepCandidate(true); });
     connect(t.buttonBack, &QPushButton::clicked, this, [this] { backToLines(); });
     connect(t.buttonDone, &QPushButton::clicked, this, [this] { done(); });
     connect(t.buttonAddLower, &QPushButton::clicked, this, [this] { addThreshold(false); });
@@ -466,8 +466,9 @@ void TaskExtraction::adoptAnalysis()
         for (Region& r : regions) {
             r.points = static_cast<int>(geometry[static_cast<size_t>(r.id)].members.size());
             if (r.choosing) {
-                search(r, r.lower, r.upper);
+                startChoosing(r, r.lower, r.upper, !std::isnan(r.upper));
             }
+            r.automaticKnown = false;
         }
     } else {
         if (regionsInitialised) {
@@ -520,7 +521,7 @@ void TaskExtraction::initialiseRegions()
         r.candidate = none;
         r.choosing = r.accepted.empty();
         if (r.choosing) {
-            search(r, none, none);
+            startChoosing(r, none, none, true);
         }
         regions.push_back(r);
     }
@@ -550,6 +551,17 @@ void TaskExtraction::acceptCandidate()
     if (!r || !r->choosing || !std::isfinite(r->candidate)) {
         return;
     }
+    if (const featurelines::RegionGeometry* g = currentGeometry()) {
+        const double repeated =
+            FeatureLines::repeatedThreshold(*g, input.options.smooth, r->candidate, r->accepted);
+        if (!std::isnan(repeated)) {
+            thresholdsUi->labelMessage->setText(
+                tr("\u03c4 = %1 gives the same patches as the accepted %2: its lines would repeat "
+                   "those. Choose another candidate.")
+                    .arg(shortNumber(r->candidate), shortNumber(repeated)));
+            return;
+        }
+    }
     r->accepted.push_back(r->candidate);
     r->choosing = false;
     thresholdsUi->labelMessage->clear();
@@ -558,38 +570,139 @@ void TaskExtraction::acceptCandidate()
     refresh();
 }
 
-void TaskExtraction::lowerCandidate()
+bool TaskExtraction::startChoosing(Region& r, double lower, double upper, bool down)
+{
+    r.lower = lower;
+    r.upper = upper;
+    r.seen.clear();
+    r.candidate = none;
+    return findCandidate(r, lower, upper, down);
+}
+
+bool TaskExtraction::findCandidate(Region& r, double lower, double upper, bool down)
+{
+    const featurelines::RegionGeometry* g = nullptr;
+    try {
+        g = &FeatureLines::regionGeometry(analysis, r.id);
+    } catch (const std::invalid_argument& e) {
+        r.note = QString::fromUtf8(e.what());
+        return false;
+    }
+    // Each pass narrows the range past the threshold it rejects; the Automatic mode's limit of
+    // searches bounds them.
+    QStringList repeats;
+    for (int pass = 0; pass < std::max(1, input.options.smooth.automatic.maxSearches); ++pass) {
+        Region trial = r;
+        if (!search(trial, lower, upper)) {
+            r.note = repeats.isEmpty() ? trial.note
+                                       : tr("the only valleys there (%1) repeat the lines of an "
+                                            "accepted threshold")
+                                             .arg(repeats.join(QLatin1String(", ")));
+            return false;
+        }
+        const double t = trial.candidate;
+        if (std::isnan(FeatureLines::repeatedThreshold(*g, input.options.smooth, t, r.accepted))) {
+            r.candidate = t;
+            r.note.clear();
+            r.seen.insert(std::upper_bound(r.seen.begin(), r.seen.end(), t), t);
+            return true;
+        }
+        repeats << shortNumber(t);
+        // Beyond the repeated one, the way the search goes; no progress: nothing beyond.
+        if (down ? !(t < upper || std::isnan(upper)) : !(t > lower || std::isnan(lower))) {
+            break;
+        }
+        (down ? upper : lower) = t;
+    }
+    r.note = tr("the only valleys there (%1) repeat the lines of an accepted threshold")
+                 .arg(repeats.join(QLatin1String(", ")));
+    return false;
+}
+
+void TaskExtraction::stepCandidate(bool higher)
 {
     Region* r = currentRegion();
     if (!r || !r->choosing || !std::isfinite(r->candidate)) {
         return;
     }
-    Region trial = *r;
-    if (search(trial, r->lower, r->candidate)) {
-        *r = trial;
-        thresholdsUi->labelMessage->clear();
+    // The history first: the nearest candidate of this stage that way.
+    const auto next = higher ? std::upper_bound(r->seen.begin(), r->seen.end(), r->candidate)
+                             : std::lower_bound(r->seen.begin(), r->seen.end(), r->candidate);
+    if (higher && next != r->seen.end()) {
+        r->candidate = *next;
+    } else if (!higher && next != r->seen.begin()) {
+        r->candidate = *std::prev(next);
     } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No lower valley: %1. The candidate stays.").arg(trial.note));
+        // Sec. 2.3: a new search in the values below (above) the candidate, between the
+        // accepted thresholds around it.
+        Region trial = *r;
+        const bool found = higher ? findCandidate(trial, r->candidate, r->upper, false)
+                                  : findCandidate(trial, r->lower, r->candidate, true);
+        if (!found) {
+            thresholdsUi->labelMessage->setText(
+                (higher ? tr("No higher valley: %1. The candidate stays.")
+                        : tr("No lower valley: %1. The candidate stays."))
+                    .arg(trial.note));
+            refresh();
+            return;
+        }
+        *r = trial;
     }
+    thresholdsUi->labelMessage->clear();
     refresh();
 }
 
-void TaskExtraction::higherCandidate()
+const std::vector<double>& TaskExtraction::thresholdsInUse(Region& r)
 {
-    Region* r = currentRegion();
-    if (!r || !r->choosing || !std::isfinite(r->candidate)) {
-        return;
+    if (!r.accepted.empty()) {
+        return r.accepted;
     }
-    Region trial = *r;
-    if (search(trial, r->candidate, r->upper)) {
-        *r = trial;
-        thresholdsUi->labelMessage->clear();
-    } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No higher valley: %1. The candidate stays.").arg(trial.note));
+    if (!r.automaticKnown) {
+        r.automatic.clear();
+        try {
+            r.automatic = FeatureLines::automaticRegionThresholds(
+                FeatureLines::regionGeometry(analysis, r.id), input.options.smooth);
+        } catch (const std::invalid_argument&) {
+            // No valley, no region: no automatic threshold either.
+        }
+        r.automaticKnown = true;
     }
-    refresh();
+    return r.automatic;
+}
+
+QString TaskExtraction::untouchedRegionsNote()
+{
+    if (regions.size() < 2) {
+        return {};
+    }
+    QStringList kept;
+    QStringList without;
+    for (Region& r : regions) {
+        if (!r.accepted.empty()) {
+            continue;
+        }
+        QStringList values;
+        for (double t : thresholdsInUse(r)) {
+            values << shortNumber(t);
+        }
+        if (values.isEmpty()) {
+            without << QString::number(r.id);
+        } else {
+            kept << tr("%1 (%2)").arg(r.id).arg(values.join(QLatin1String(", ")));
+        }
+    }
+    QString note;
+    if (!kept.isEmpty()) {
+        note += tr("Regions without a threshold of yours keep the automatic ones: %1.")
+                    .arg(kept.join(QLatin1String("; ")));
+    }
+    if (!without.isEmpty()) {
+        note += (note.isEmpty() ? QString() : QStringLiteral(" ")) +
+                tr("<b>No smooth lines</b> in region(s) %1: no threshold of yours and no automatic "
+                   "one.")
+                    .arg(without.join(QLatin1String(", ")));
+    }
+    return note;
 }
 
 void TaskExtraction::backToLines()
@@ -612,10 +725,9 @@ void TaskExtraction::addThreshold(bool higher)
     // above the highest.
     const auto [lo, hi] = std::minmax_element(r->accepted.begin(), r->accepted.end());
     Region trial = *r;
-    trial.lower = higher ? *hi : none;
-    trial.upper = higher ? none : *lo;
     trial.choosing = true;
-    if (search(trial, trial.lower, trial.upper)) {
+    // Going away from the accepted threshold it starts at, past any that would repeat it.
+    if (startChoosing(trial, higher ? *hi : none, higher ? none : *lo, !higher)) {
         *r = trial;
         thresholdsUi->labelMessage->clear();
     } else {
@@ -646,6 +758,7 @@ void TaskExtraction::chooseValue(double value)
     r->candidate = value;
     r->choosing = true;
     r->note.clear();
+    r->seen.assign(1, value);
     thresholdsUi->labelMessage->setText(tr("Candidate chosen in the histogram."));
     refresh();
 }
@@ -692,14 +805,17 @@ void TaskExtraction::writeThresholds()
         runLine(obj + ".RegionThresholds = {}");
         return;
     }
-    // Several regions: each its own list; regions without one get none (Thresholds empty).
+    // Several regions: each its own list. A region without an accepted threshold keeps the
+    // thresholds the Automatic mode gives it (its lines do not vanish because another region
+    // went Explicit); one without those either gets none (Thresholds empty).
     std::string map;
-    for (const Region& r : regions) {
-        if (r.accepted.empty()) {
+    for (Region& r : regions) {
+        const std::vector<double>& thresholds = thresholdsInUse(r);
+        if (thresholds.empty()) {
             continue;
         }
         std::string text;
-        for (double t : list(r.accepted)) {
+        for (double t : list(thresholds)) {
             text += (text.empty() ? "" : " ") + pythonNumber(t);
         }
         map += (map.empty() ? "'" : ", '") + std::to_string(r.id) + "': '" + text + "'";
@@ -868,11 +984,13 @@ void TaskExtraction::refreshStage()
     if (const FeatureLines::Extraction* e = extraction()) {
         std::tie(lines, closed) = regionLines(*e, r->id);
     }
+    const QString others = untouchedRegionsNote();
     t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b>, at \u03c4 = %3. Are the lines "
                              "complete? Done, or add a threshold.")
                               .arg(lines)
                               .arg(closed)
-                              .arg(accepted.join(QLatin1String(", "))));
+                              .arg(accepted.join(QLatin1String(", "))) +
+                          (others.isEmpty() ? QString() : QStringLiteral("<br>") + others));
 }
 
 std::vector<int> TaskExtraction::labelsPerInputPoint(const Region* r,

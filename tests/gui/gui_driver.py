@@ -110,6 +110,15 @@ def analysis_running():
     return run_state() == "running"
 
 
+def choose_in_histogram(value):
+    """What a click in the histogram at curvature `value` does: the widget's valueClicked
+    signal, emitted as the click emits it."""
+    histogram = find(QtWidgets.QWidget, "histogram")
+    log("choose %r in the histogram" % value)
+    check(QtCore.QObject.emit(histogram, QtCore.SIGNAL("valueClicked(double)"), value),
+          "the histogram has no signal valueClicked(double)")
+
+
 def press_dialog_button(which):
     """Presses OK or Cancel of the open task dialog ('ok' or 'cancel'), as a user does."""
     role = {"ok": QtWidgets.QDialogButtonBox.Ok, "cancel": QtWidgets.QDialogButtonBox.Cancel}
