@@ -53,9 +53,40 @@ namespace {
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
 
 /// The options shown in the panel: the ones that decide the regions and their histograms. The
-/// others are in the property editor (their defaults scale with the cloud).
-const char* const panelOptions[] = {"NeighbourCount", "GrowAngle",     "MinFilletRadius",
-                                    "Smoothing",      "HistogramBins", "OutlierPercent"};
+/// others are in the property editor (their defaults scale with the cloud). Each with its name
+/// and meaning in plain words; the tooltip adds the property's name and documentation.
+struct PanelOption
+{
+    const char* property;
+    const char* label;
+    const char* meaning;
+};
+const PanelOption panelOptions[] = {
+    {"NeighbourCount", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Neighbours per point"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How many nearby points describe the surface at each point. More: "
+                       "smoother, slower, small details lost.")},
+    {"GrowAngle", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Sharp-edge angle"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How far the surface may turn between neighbouring points before the "
+                       "fold counts as a sharp edge.")},
+    {"MinFilletRadius", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Smallest fillet"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Rounded edges tighter than this radius are treated as sharp edges, wider "
+                       "ones as fillets whose borders become smooth lines.")},
+    {"Smoothing", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Smooth noisy scans"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Whether noisy parts of the cloud are smoothed before their curvature is "
+                       "measured (Taubin smoothing, Sec. 2.4).")},
+    {"HistogramBins", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Histogram bars"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How many bars the curvature histogram starts with (L_start, Sec. 2.2).")},
+    {"OutlierPercent",
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Ignore most curved (%)"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Share of the most curved points left out of the histogram, as scan noise "
+                       "(outliers, Sec. 2.4); -1: 1 % in smoothed parts, none elsewhere.")},
+};
 
 /// A number as Python writes it back exactly.
 std::string pythonNumber(double v)
@@ -198,7 +229,8 @@ void TaskExtraction::buildOptions()
     } else {
         optionsUi->labelSource->setText(tr("No point cloud: set the Source property."));
     }
-    for (const char* name : panelOptions) {
+    for (const PanelOption& option : panelOptions) {
+        const char* name = option.property;
         const Parameter* p = FeatureLines::findParameter(name);
         if (!p) {
             continue;
@@ -247,8 +279,10 @@ void TaskExtraction::buildOptions()
         }
         }
         widget->setObjectName(QString::fromLatin1(name));
-        widget->setToolTip(QString::fromUtf8(p->doc));
-        auto* label = new QLabel(QString::fromLatin1(name) + QLatin1String(":"));
+        widget->setToolTip(
+            tr(option.meaning) + QLatin1String("\n\n") +
+            tr("Property %1: %2").arg(QString::fromLatin1(name), QString::fromUtf8(p->doc)));
+        auto* label = new QLabel(tr(option.label) + QLatin1String(":"));
         label->setToolTip(widget->toolTip());
         optionsUi->optionsForm->addRow(label, widget);
         optionWidgets[name] = widget;
@@ -300,6 +334,7 @@ void TaskExtraction::connectWidgets()
     connect(t.buttonHigher, &QPushButton::clicked, this, [this] { stepCandidate(true); });
     connect(t.buttonBack, &QPushButton::clicked, this, [this] { backToLines(); });
     connect(t.buttonDone, &QPushButton::clicked, this, [this] { done(); });
+    connect(t.buttonHelp, &QPushButton::toggled, t.labelHelp, &QLabel::setVisible);
     connect(t.buttonAddLower, &QPushButton::clicked, this, [this] { addThreshold(false); });
     connect(t.buttonAddHigher, &QPushButton::clicked, this, [this] { addThreshold(true); });
     connect(t.histogram, &HistogramWidget::valueClicked, this,
@@ -411,7 +446,8 @@ void TaskExtraction::runFinished()
     input.options.progress = nullptr;
     adoptAnalysis();
     const size_t count = analysis.regions ? analysis.regions->geometry.size() : 0;
-    QString status = tr("%1 points, spacing %2, %3 smooth region(s).")
+    QString status = tr("%1 points, %2 apart on average (spacing), %3 part(s) between sharp "
+                        "edges (smooth regions).")
                          .arg(analysis.geometry->inputToPoint.size())
                          .arg(shortNumber(analysis.geometry->spacing))
                          .arg(count);
@@ -427,7 +463,8 @@ void TaskExtraction::runFinished()
             }
         }
         if (!coarse.isEmpty()) {
-            status += QLatin1Char(' ') + tr("Curvature at a coarser scale (noise): region %1.")
+            status += QLatin1Char(' ') + tr("Noisy: curvature measured at a coarser scale in "
+                                            "region %1.")
                                              .arg(coarse.join(QLatin1String(", ")));
         }
     }
@@ -640,8 +677,8 @@ void TaskExtraction::stepCandidate(bool higher)
                                   : findCandidate(trial, r->lower, r->candidate, true);
         if (!found) {
             thresholdsUi->labelMessage->setText(
-                (higher ? tr("No higher valley: %1. The candidate stays.")
-                        : tr("No lower valley: %1. The candidate stays."))
+                (higher ? tr("No higher level found (no valley above): %1. The proposal stays.")
+                        : tr("No lower level found (no valley below): %1. The proposal stays."))
                     .arg(trial.note));
             refresh();
             return;
@@ -731,8 +768,10 @@ void TaskExtraction::addThreshold(bool higher)
         *r = trial;
         thresholdsUi->labelMessage->clear();
     } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No %1 valley: %2").arg(higher ? tr("higher") : tr("lower")).arg(trial.note));
+        thresholdsUi->labelMessage->setText((higher
+                                                 ? tr("No higher level found (no valley above): %1")
+                                                 : tr("No lower level found (no valley below): %1"))
+                                                .arg(trial.note));
     }
     refresh();
 }
@@ -759,7 +798,7 @@ void TaskExtraction::chooseValue(double value)
     r->choosing = true;
     r->note.clear();
     r->seen.assign(1, value);
-    thresholdsUi->labelMessage->setText(tr("Candidate chosen in the histogram."));
+    thresholdsUi->labelMessage->setText(tr("Level chosen in the histogram."));
     refresh();
 }
 
@@ -936,8 +975,9 @@ void TaskExtraction::refreshStage()
     thresholdsWidget->setProperty("candidate", r && r->choosing ? r->candidate : none);
     thresholdsWidget->setProperty("region", r ? r->id : -1);
     if (!analysed || !r) {
-        t.labelStage->setText(analysed ? tr("The cloud has no smooth region to threshold.")
-                                       : tr("The thresholds follow the analysis."));
+        t.labelStage->setText(analysed ? tr("The cloud has no part between sharp edges (smooth "
+                                            "region) to look for fillet borders in.")
+                                       : tr("The curvature levels follow the analysis above."));
         t.stageStack->setEnabled(false);
         t.buttonBack->setVisible(false);
         return;
@@ -955,26 +995,29 @@ void TaskExtraction::refreshStage()
         t.buttonHigher->setEnabled(has);
         t.buttonBack->setVisible(!r->accepted.empty());
         if (!has) {
-            t.labelStage->setText(tr("<b>No candidate threshold</b>: %1. Click in the histogram "
+            t.labelStage->setText(tr("<b>No candidate threshold</b> (no curvature level to "
+                                     "propose): %1. Click in the histogram "
                                      "to choose one.")
                                       .arg(r->note.toHtmlEscaped()));
             return;
         }
         QString counts;
         if (labelCounts.size() == 4) {
-            counts = tr("<br>Points: %1 low, %2 inner, %3 border, %4 noisy.")
+            counts = tr("<br>Points: %1 flatter (low), %2 more curved (inner), %3 at the change "
+                        "(border), %4 isolated (noisy).")
                          .arg(labelCounts[0])
                          .arg(labelCounts[1])
                          .arg(labelCounts[2])
                          .arg(labelCounts[3]);
         }
         t.labelStage->setText(
-            tr("<b>Candidate \u03c4 = %1</b>%2. Does it divide the points right? Accept it, or "
-               "search a lower or higher valley.%3")
+            tr("<b>Proposed curvature level %1</b> (threshold \u03c4)%2. Do the green areas "
+               "ringed in black show the fillets or corners you want lines around? Accept, or "
+               "try a lower or higher level.%3")
                 .arg(shortNumber(r->candidate))
                 .arg(accepted.isEmpty()
                          ? QString()
-                         : tr(" (accepted: %1)").arg(accepted.join(QLatin1String(", "))))
+                         : tr("; accepted: %1").arg(accepted.join(QLatin1String(", "))))
                 .arg(counts));
         return;
     }
@@ -985,8 +1028,9 @@ void TaskExtraction::refreshStage()
         std::tie(lines, closed) = regionLines(*e, r->id);
     }
     const QString others = untouchedRegionsNote();
-    t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b>, at \u03c4 = %3. Are the lines "
-                             "complete? Done, or add a threshold.")
+    t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b> (fillet borders) at curvature "
+                             "level \u03c4 = %3. Are all the lines there? Done, or add a level "
+                             "for lines between flatter or more curved surfaces.")
                               .arg(lines)
                               .arg(closed)
                               .arg(accepted.join(QLatin1String(", "))) +
@@ -1039,8 +1083,8 @@ void TaskExtraction::refreshPreview()
             colours[i] = PointPreview::labelColour(perInput[i]);
         }
         QString legend;
-        const char* names[] = {QT_TR_NOOP("low"), QT_TR_NOOP("inner"), QT_TR_NOOP("border"),
-                               QT_TR_NOOP("noisy")};
+        const char* names[] = {QT_TR_NOOP("flatter (low)"), QT_TR_NOOP("curved (inner)"),
+                               QT_TR_NOOP("change (border)"), QT_TR_NOOP("isolated (noisy)")};
         for (int l = 0; l < 4; ++l) {
             legend += QString::fromUtf8("<span style=\"color:%1\">\u25a0</span> %2&nbsp;&nbsp; ")
                           .arg(colourName(PointPreview::labelColour(l)), tr(names[l]));
@@ -1068,8 +1112,8 @@ void TaskExtraction::refreshPreview()
         for (size_t i = 0; i < colours.size(); ++i) {
             colours[i] = PointPreview::patchColour(patch[i]);
         }
-        t.labelLegend->setText(tr("%1 patch(es): the connected points between the same two "
-                                  "thresholds.")
+        t.labelLegend->setText(tr("%1 surface patch(es): connected points between the same two "
+                                  "curvature levels.")
                                    .arg(next));
     }
     if (preview) {

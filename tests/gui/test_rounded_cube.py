@@ -68,6 +68,8 @@ def higher():
 
 
 def lower():
+    from PySide2 import QtWidgets
+
     # Lower and Higher step through the candidates as a history: Lower after Higher comes back
     # to the first candidate, Higher again to the corner one.
     g.click("buttonLower")
@@ -86,6 +88,16 @@ def lower():
     g.settle(1.5)  # the box folds in an animation
     g.check_panel_fits("stage (a), the analysis box folded")
     g.screenshot("rounded_cube_labels")
+    # The one-screen help: plain words, the paper's terms in parentheses, within the panel.
+    g.click("buttonHelp")
+    g.check(g.find(QtWidgets.QLabel, "labelHelp").isVisible(), "the help shows")
+    text = g.label("labelHelp")
+    for words in ("mean curvature", "(candidate threshold", "(inner)", "(border)", "Accept"):
+        g.check(words in text, "the help explains %s" % words)
+    g.check_panel_fits("the help open")
+    g.screenshot("rounded_cube_help")
+    g.click("buttonHelp")
+    g.check(not g.find(QtWidgets.QLabel, "labelHelp").isVisible(), "a second click hides it")
 
 
 def corner_of(point):
