@@ -188,28 +188,30 @@ private:
     const char* mode;
 };
 
+/// The colouring commands: name, ColourPoints value, menu text, tool tip.
+const char* const colourCommands[][4] = {
+    {"FeatureLines_ColourByRegion", "Region", QT_TR_NOOP("Colour cloud by part (region)"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per part between "
+                "sharp edges (smooth region); grey on the sharp edges.")},
+    {"FeatureLines_ColourByPatch", "Patch", QT_TR_NOOP("Colour cloud by surface patch"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per surface patch "
+                "(connected points between the same two curvature levels).")},
+    {"FeatureLines_ColourByLabel", "Label", QT_TR_NOOP("Colour cloud by flat / curved (label)"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines as the panel does: flatter blue "
+                "(low), curved green (inner), change black (border), isolated red (noisy).")},
+    {"FeatureLines_ColourByCurvature", "Curvature", QT_TR_NOOP("Colour cloud by curvature"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines from blue (flat) to red (most "
+                "curved) by its mean curvature.")},
+    {"FeatureLines_ColourNothing", "Nothing", QT_TR_NOOP("Plain cloud"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines as it is again.")},
+};
+
 void CreateFeatureLinesCommands()
 {
     Gui::CommandManager& manager = Gui::Application::Instance->commandManager();
     manager.addCommand(new CmdFeatureLinesExtract());
     manager.addCommand(new CmdFeatureLinesMakePatchClouds());
-    manager.addCommand(new CmdFeatureLinesColourPoints(
-        "FeatureLines_ColourByRegion", "Region", QT_TR_NOOP("Colour cloud by part (region)"),
-        QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per part "
-                   "between sharp edges (smooth region); grey on the sharp edges.")));
-    manager.addCommand(new CmdFeatureLinesColourPoints(
-        "FeatureLines_ColourByPatch", "Patch", QT_TR_NOOP("Colour cloud by surface patch"),
-        QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per surface "
-                   "patch (connected points between the same two curvature levels).")));
-    manager.addCommand(new CmdFeatureLinesColourPoints(
-        "FeatureLines_ColourByLabel", "Label", QT_TR_NOOP("Colour cloud by flat / curved (label)"),
-        QT_TR_NOOP("Draw the cloud of the selected feature lines as the panel does: flatter blue "
-                   "(low), curved green (inner), change black (border), isolated red (noisy).")));
-    manager.addCommand(new CmdFeatureLinesColourPoints(
-        "FeatureLines_ColourByCurvature", "Curvature", QT_TR_NOOP("Colour cloud by curvature"),
-        QT_TR_NOOP("Draw the cloud of the selected feature lines from blue (flat) to red (most "
-                   "curved) by its mean curvature.")));
-    manager.addCommand(new CmdFeatureLinesColourPoints(
-        "FeatureLines_ColourNothing", "Nothing", QT_TR_NOOP("Plain cloud"),
-        QT_TR_NOOP("Draw the cloud of the selected feature lines as it is again.")));
+    for (const auto& c : colourCommands) {
+        manager.addCommand(new CmdFeatureLinesColourPoints(c[0], c[1], c[2], c[3]));
+    }
 }
