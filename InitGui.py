@@ -27,9 +27,12 @@ class FeatureLinesWorkbench(FreeCADGui.Workbench):
     def Initialize(self):
         import FeatureLinesGui  # noqa: F401  (registers the command and the view provider)
 
-        commands = ["FeatureLines_Extract"]
+        commands = ["FeatureLines_Extract", "FeatureLines_MakePatchClouds"]
+        colouring = ["FeatureLines_ColourByRegion", "FeatureLines_ColourByPatch",
+                     "FeatureLines_ColourByLabel", "FeatureLines_ColourByCurvature",
+                     "FeatureLines_ColourNothing"]
         self.appendToolbar("Feature Lines", commands)
-        self.appendMenu("&Feature Lines", commands)
+        self.appendMenu("&Feature Lines", commands + ["Separator"] + colouring)
 
     def Activated(self):
         pass

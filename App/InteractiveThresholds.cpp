@@ -13,6 +13,7 @@
 #include <string>
 
 #include "ExtractionFeature.h"
+#include "FeatureLines/smooth/AutomaticThresholds.h"
 
 namespace FeatureLines {
 
@@ -197,6 +198,59 @@ void scatterToInputPoints(const featurelines::CloudGeometry& cloud, const Region
             perInputPoint[j] = perRegionPoint[static_cast<size_t>(i)];
         }
     }
+}
+
+double repeatedThreshold(const RegionGeometry& region, const SmoothEdgeOptions& options,
+                         double candidate, const std::vector<double>& accepted)
+{
+    double below = none;
+    double above = none;
+    for (double a : accepted) {
+        if (a == candidate) {
+            return a;
+        }
+        if (a < candidate && !(a <= below)) {
+            below = a;
+        }
+        if (a > candidate && !(a >= above)) {
+            above = a;
+        }
+    }
+    if (std::isnan(below) && std::isnan(above)) {
+        return none;
+    }
+    const auto [patchAbove, patchBelow] =
+        featurelines::largestLevelPatches(region, below, candidate, above);
+    const int least = featurelines::minimumPatchPoints(region, options.automatic);
+    if (!std::isnan(above) && patchAbove < least) {
+        return above;
+    }
+    if (!std::isnan(below) && patchBelow < least) {
+        return below;
+    }
+    // An open side without a patch (a candidate beyond every curved point): no new patch
+    // either; the lines are those of the accepted threshold on the other side.
+    if (std::isnan(above) && patchAbove < least) {
+        return below;
+    }
+    if (std::isnan(below) && patchBelow < least) {
+        return above;
+    }
+    return none;
+}
+
+std::vector<double> automaticRegionThresholds(const RegionGeometry& region,
+                                              const SmoothEdgeOptions& options)
+{
+    std::vector<double> thresholds;
+    for (const featurelines::ThresholdDecision& d :
+         featurelines::automaticThresholds(region, options)) {
+        if (d.accepted) {
+            thresholds.push_back(d.applied);
+        }
+    }
+    std::sort(thresholds.begin(), thresholds.end(), std::greater<double>());
+    return thresholds;
 }
 
 } // namespace FeatureLines

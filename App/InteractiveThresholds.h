@@ -67,12 +67,28 @@ featurelines::ThresholdResult searchThreshold(const featurelines::RegionGeometry
                                               const featurelines::SmoothEdgeOptions& options,
                                               double lower, double upper);
 
+/// The accepted threshold whose lines `candidate` would repeat, NaN when it adds a patch of its
+/// own. Accepting the candidate splits the level between the accepted thresholds next to it;
+/// when one of the two parts holds no patch of at least minimumPatchPoints inner points (the
+/// automatic mode's patch test, AutomaticThresholds.h), the candidate only shaves a band off a
+/// patch the accepted threshold on that side already bounds: the same patches, and lines beside
+/// that threshold's. So does a candidate whose open side (no accepted threshold beyond it) holds
+/// no patch: it repeats the accepted threshold on its other side. A candidate equal to an
+/// accepted threshold repeats it; with none accepted nothing is repeated.
+double repeatedThreshold(const featurelines::RegionGeometry& region,
+                         const featurelines::SmoothEdgeOptions& options, double candidate,
+                         const std::vector<double>& accepted);
+
+/// The thresholds the Automatic mode gives the region (Extraction's ThresholdMode Automatic),
+/// high to low; empty when it finds no significant valley.
+std::vector<double> automaticRegionThresholds(const featurelines::RegionGeometry& region,
+                                              const featurelines::SmoothEdgeOptions& options);
+
 /// Sec. 3 labels of the region's points at `threshold` (low, inner, border, noisy), per region
 /// point: the labels of the paper's Fig. 7 a, before the core levels noise islands for its lines.
 std::vector<featurelines::PointLabel> regionLabels(const featurelines::RegionGeometry& region,
                                                    double threshold,
                                                    const featurelines::SmoothEdgeOptions& options);
-
 
 /// Per input point of the cloud (CloudGeometry::inputToPoint: duplicates share a point), the
 /// value of its point in `region` (`perRegionPoint`, one per region point), `outside` for the

@@ -42,6 +42,7 @@ private:
     Py::Object searchThresholdOf(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object regionLabelsOf(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object regionPatchesOf(const Py::Tuple& args, const Py::Dict& keywords);
+    Py::Object repeatedThresholdOf(const Py::Tuple& args, const Py::Dict& keywords);
 
     // The cache of analyses and the progress observer.
     void addCacheFunctions();

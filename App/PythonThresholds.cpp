@@ -154,6 +154,14 @@ void Module::addThresholdFunctions()
         "Per point of the source cloud its patch at the given thresholds: the connected\n"
         "points of the region between the same two thresholds, numbered from 0; -1 outside\n"
         "the region.");
+    add_keyword_method(
+        "repeatedThreshold", &Module::repeatedThresholdOf,
+        "repeatedThreshold(extraction, region, candidate, accepted) -> float or None\n"
+        "The accepted threshold whose lines the candidate would repeat: one of the two levels\n"
+        "the candidate cuts from the accepted thresholds around it holds no patch of its own\n"
+        "(no 2 k connected inner points), so the candidate gives the same patches and lines\n"
+        "beside that threshold's. None when the candidate adds a patch. The task panel never\n"
+        "offers or accepts such a candidate.");
 }
 
 Py::Object Module::histogram(const Py::Tuple& args, const Py::Dict& keywords)
@@ -259,6 +267,24 @@ Py::Object Module::regionPatchesOf(const Py::Tuple& args, const Py::Dict& keywor
     std::vector<int> patch;
     featurelines::labelPatches(g, levels, 0, patch);
     return perSourcePoint(a, g, patch);
+}
+
+Py::Object Module::repeatedThresholdOf(const Py::Tuple& args, const Py::Dict& keywords)
+{
+    PyObject* object = nullptr;
+    int region = 0;
+    double candidate = 0.0;
+    PyObject* accepted = nullptr;
+    static const char* names[] = {"extraction", "region", "candidate", "accepted", nullptr};
+    if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "OidO", const_cast<char**>(names),
+                                     &object, &region, &candidate, &accepted)) {
+        throw Py::Exception();
+    }
+    const std::vector<double> levels = numbersOf(Py::Object(accepted), "accepted");
+    const AnalysedExtraction a = analysedExtraction(object, "repeatedThreshold");
+    const double repeated =
+        repeatedThreshold(regionGeometry(a.analysis, region), a.options.smooth, candidate, levels);
+    return std::isnan(repeated) ? Py::None() : Py::Object(Py::Float(repeated));
 }
 
 } // namespace FeatureLines

@@ -5,6 +5,8 @@
 #include <FCConfig.h>
 
 #include <App/Document.h>
+#include <Base/Exception.h>
+#include <Base/Type.h>
 #include <Gui/Application.h>
 #include <Gui/Command.h>
 #include <Gui/Control.h>
@@ -71,8 +73,145 @@ bool CmdFeatureLinesExtract::isActive()
     return hasActiveDocument() && !Gui::Control().activeDialog();
 }
 
+namespace {
+
+/// The one FeatureLines::Extraction selected, or nullptr after a message saying what to select
+/// (`what`: the command's name for the message).
+App::DocumentObject* selectedExtraction(const QString& what)
+{
+    const std::vector<App::DocumentObject*> selected =
+        Gui::Selection().getObjectsOfType(Base::Type::fromName("FeatureLines::Extraction"));
+    if (selected.size() == 1) {
+        return selected.front();
+    }
+    QMessageBox::warning(
+        Gui::getMainWindow(), QObject::tr("Select feature lines"),
+        selected.empty()
+            ? QObject::tr("Select a FeatureLines object (made by Extract feature lines) in the "
+                          "tree, then run %1 again.")
+                  .arg(what)
+            : QObject::tr("%1 FeatureLines objects are selected: select one, then run %2 again.")
+                  .arg(selected.size())
+                  .arg(what));
+    return nullptr;
+}
+
+bool extractionSelected()
+{
+    return Gui::Selection().countObjectsOfType(Base::Type::fromName("FeatureLines::Extraction")) ==
+           1;
+}
+
+} // namespace
+
+// ---- Patch clouds ------------------------------------------------------------------------
+
+DEF_STD_CMD_A(CmdFeatureLinesMakePatchClouds)
+
+CmdFeatureLinesMakePatchClouds::CmdFeatureLinesMakePatchClouds()
+    : Command("FeatureLines_MakePatchClouds")
+{
+    sAppModule = "FeatureLines";
+    sGroup = QT_TR_NOOP("FeatureLines");
+    sMenuText = QT_TR_NOOP("Make patch clouds");
+    sToolTipText =
+        QT_TR_NOOP("One point cloud per surface patch of the selected feature lines (the points\n"
+                   "between the same two curvature levels, connected), in a new group: hand\n"
+                   "them to surface fitting. Patches smaller than twice NeighbourCount are left\n"
+                   "out.");
+    sWhatsThis = "FeatureLines_MakePatchClouds";
+    sStatusTip = sToolTipText;
+}
+
+void CmdFeatureLinesMakePatchClouds::activated(int)
+{
+    App::DocumentObject* lines = selectedExtraction(QObject::tr("Make patch clouds"));
+    if (!lines) {
+        return;
+    }
+    const char* doc = lines->getDocument()->getName();
+    openCommand(QT_TRANSLATE_NOOP("Command", "Make patch clouds"));
+    try {
+        doCommand(Doc, "import FeatureLines");
+        doCommand(Doc, "FeatureLines.makePatchClouds(App.getDocument('%s').getObject('%s'))", doc,
+                  lines->getNameInDocument());
+        commitCommand();
+    } catch (const Base::Exception& e) {
+        abortCommand();
+        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("No patch clouds"),
+                             QString::fromUtf8(e.what()));
+    }
+}
+
+bool CmdFeatureLinesMakePatchClouds::isActive()
+{
+    return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+}
+
+// ---- Colouring the cloud -----------------------------------------------------------------
+
+/// Colour the selected feature lines' cloud by one of its per-point outputs (the view's
+/// ColourPoints), or back to the plain cloud.
+class CmdFeatureLinesColourPoints : public Gui::Command
+{
+public:
+    CmdFeatureLinesColourPoints(const char* name, const char* mode, const char* menuText,
+                                const char* toolTip)
+        : Command(name), mode(mode)
+    {
+        sAppModule = "FeatureLines";
+        sGroup = QT_TR_NOOP("FeatureLines");
+        sMenuText = menuText;
+        sToolTipText = toolTip;
+        sWhatsThis = name;
+        sStatusTip = toolTip;
+    }
+    const char* className() const override { return "CmdFeatureLinesColourPoints"; }
+
+protected:
+    void activated(int) override
+    {
+        App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText));
+        if (!lines) {
+            return;
+        }
+        // A view property: a macro line, kept with the document's view; "Plain cloud" removes it.
+        doCommand(Gui, "Gui.getDocument('%s').getObject('%s').ColourPoints = '%s'",
+                  lines->getDocument()->getName(), lines->getNameInDocument(), mode);
+    }
+    bool isActive() override
+    {
+        return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+    }
+
+private:
+    const char* mode;
+};
+
+/// The colouring commands: name, ColourPoints value, menu text, tool tip.
+const char* const colourCommands[][4] = {
+    {"FeatureLines_ColourByRegion", "Region", QT_TR_NOOP("Colour cloud by part (region)"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per part between "
+                "sharp edges (smooth region); grey on the sharp edges.")},
+    {"FeatureLines_ColourByPatch", "Patch", QT_TR_NOOP("Colour cloud by surface patch"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines with one colour per surface patch "
+                "(connected points between the same two curvature levels).")},
+    {"FeatureLines_ColourByLabel", "Label", QT_TR_NOOP("Colour cloud by flat / curved (label)"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines as the panel does: flatter blue "
+                "(low), curved green (inner), change black (border), isolated red (noisy).")},
+    {"FeatureLines_ColourByCurvature", "Curvature", QT_TR_NOOP("Colour cloud by curvature"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines from blue (flat) to red (most "
+                "curved) by its mean curvature.")},
+    {"FeatureLines_ColourNothing", "Nothing", QT_TR_NOOP("Plain cloud"),
+     QT_TR_NOOP("Draw the cloud of the selected feature lines as it is again.")},
+};
+
 void CreateFeatureLinesCommands()
 {
     Gui::CommandManager& manager = Gui::Application::Instance->commandManager();
     manager.addCommand(new CmdFeatureLinesExtract());
+    manager.addCommand(new CmdFeatureLinesMakePatchClouds());
+    for (const auto& c : colourCommands) {
+        manager.addCommand(new CmdFeatureLinesColourPoints(c[0], c[1], c[2], c[3]));
+    }
 }

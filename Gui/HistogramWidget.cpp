@@ -143,7 +143,7 @@ QSize HistogramWidget::sizeHint() const
 
 QSize HistogramWidget::minimumSizeHint() const
 {
-    return {200, 120};
+    return {150, 120};
 }
 
 bool HistogramWidget::hasBars() const
@@ -362,8 +362,19 @@ void HistogramWidget::drawAxes(QPainter& p, const Layout& l) const
     p.drawLine(l.plot.bottomLeft(), l.plot.topLeft());
 
     p.setPen(text);
-    p.drawText(QRectF(l.plot.left(), l.plot.bottom() + tick + line, l.plot.width(), line * 1.2),
-               Qt::AlignHCenter | Qt::AlignVCenter, tr("mean curvature (1/length)"));
+    // The x title under the plot; in a narrow panel it may use the whole width, and a shorter
+    // wording when even that is too little (never cut off).
+    QString xTitle = tr("mean curvature (1/length)");
+    QRectF titleBox(l.plot.left(), l.plot.bottom() + tick + line, l.plot.width(), line * 1.2);
+    if (fm.horizontalAdvance(xTitle) > titleBox.width()) {
+        titleBox.setLeft(0.0);
+        titleBox.setRight(width());
+    }
+    if (fm.horizontalAdvance(xTitle) > titleBox.width()) {
+        xTitle = tr("curvature (1/length)");
+    }
+    p.drawText(titleBox, Qt::AlignHCenter | Qt::AlignVCenter,
+               fm.elidedText(xTitle, Qt::ElideRight, titleBox.width()));
     const QString yTitle = scale_ == Scale::Log          ? tr("points (log)")
                            : scale_ == Scale::SquareRoot ? tr("points (sqrt)")
                                                          : tr("points");

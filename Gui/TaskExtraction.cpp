@@ -37,6 +37,7 @@
 #include "AnalysisRun.h"
 #include "ExtractionFeature.h"
 #include "ExtractionParameters.h"
+#include "FeatureLines/cli/Progress.h"
 #include "HistogramWidget.h"
 #include "PointPreview.h"
 #include "ViewProviderExtraction.h"
@@ -52,9 +53,40 @@ namespace {
 constexpr double none = std::numeric_limits<double>::quiet_NaN();
 
 /// The options shown in the panel: the ones that decide the regions and their histograms. The
-/// others are in the property editor (their defaults scale with the cloud).
-const char* const panelOptions[] = {"NeighbourCount", "GrowAngle",     "MinFilletRadius",
-                                    "Smoothing",      "HistogramBins", "OutlierPercent"};
+/// others are in the property editor (their defaults scale with the cloud). Each with its name
+/// and meaning in plain words; the tooltip adds the property's name and documentation.
+struct PanelOption
+{
+    const char* property;
+    const char* label;
+    const char* meaning;
+};
+const PanelOption panelOptions[] = {
+    {"NeighbourCount", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Neighbours per point"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How many nearby points describe the surface at each point. More: "
+                       "smoother, slower, small details lost.")},
+    {"GrowAngle", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Sharp-edge angle"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How far the surface may turn between neighbouring points before the "
+                       "fold counts as a sharp edge.")},
+    {"MinFilletRadius", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Smallest fillet"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Rounded edges tighter than this radius are treated as sharp edges, wider "
+                       "ones as fillets whose borders become smooth lines.")},
+    {"Smoothing", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Smooth noisy scans"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Whether noisy parts of the cloud are smoothed before their curvature is "
+                       "measured (Taubin smoothing, Sec. 2.4).")},
+    {"HistogramBins", QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Histogram bars"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "How many bars the curvature histogram starts with (L_start, Sec. 2.2).")},
+    {"OutlierPercent",
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction", "Ignore most curved (%)"),
+     QT_TRANSLATE_NOOP("FeatureLinesGui::TaskExtraction",
+                       "Share of the most curved points left out of the histogram, as scan noise "
+                       "(outliers, Sec. 2.4); -1: 1 % in smoothed parts, none elsewhere.")},
+};
 
 /// A number as Python writes it back exactly.
 std::string pythonNumber(double v)
@@ -197,7 +229,8 @@ void TaskExtraction::buildOptions()
     } else {
         optionsUi->labelSource->setText(tr("No point cloud: set the Source property."));
     }
-    for (const char* name : panelOptions) {
+    for (const PanelOption& option : panelOptions) {
+        const char* name = option.property;
         const Parameter* p = FeatureLines::findParameter(name);
         if (!p) {
             continue;
@@ -246,8 +279,10 @@ void TaskExtraction::buildOptions()
         }
         }
         widget->setObjectName(QString::fromLatin1(name));
-        widget->setToolTip(QString::fromUtf8(p->doc));
-        auto* label = new QLabel(QString::fromLatin1(name) + QLatin1String(":"));
+        widget->setToolTip(
+            tr(option.meaning) + QLatin1String("\n\n") +
+            tr("Property %1: %2").arg(QString::fromLatin1(name), QString::fromUtf8(p->doc)));
+        auto* label = new QLabel(tr(option.label) + QLatin1String(":"));
         label->setToolTip(widget->toolTip());
         optionsUi->optionsForm->addRow(label, widget);
         optionWidgets[name] = widget;
@@ -287,19 +322,19 @@ void TaskExtraction::connectWidgets()
     connect(o.buttonRun, &QPushButton::clicked, this, [this] { startRun(); });
     connect(o.buttonCancelRun, &QPushButton::clicked, this, [this] {
         run->cancel();
+        cancelling = true;
         optionsUi->labelStatus->setText(tr("Cancelling at the next stage..."));
     });
-    connect(run, &AnalysisRun::progressed, this, [this](int percent, const QString& stage) {
-        optionsUi->progressBar->setValue(percent);
-        optionsUi->progressBar->setFormat(stage + QLatin1String(" %p%"));
-    });
+    connect(run, &AnalysisRun::progressed, this,
+            [this](int percent, const QString& stage) { showProgress(percent, stage); });
     connect(run, &AnalysisRun::finished, this, [this] { runFinished(); });
 
     connect(t.buttonAccept, &QPushButton::clicked, this, [this] { acceptCandidate(); });
-    connect(t.buttonLower, &QPushButton::clicked, this, [this] { lowerCandidate(); });
-    connect(t.buttonHigher, &QPushButton::clicked, this, [this] { higherCandidate(); });
+    connect(t.buttonLower, &QPushButton::clicked, this, [this] { stepCandidate(false); });
+    connect(t.buttonHigher, &QPushButton::clicked, this, [this] { stepCandidate(true); });
     connect(t.buttonBack, &QPushButton::clicked, this, [this] { backToLines(); });
     connect(t.buttonDone, &QPushButton::clicked, this, [this] { done(); });
+    connect(t.buttonHelp, &QPushButton::toggled, t.labelHelp, &QLabel::setVisible);
     connect(t.buttonAddLower, &QPushButton::clicked, this, [this] { addThreshold(false); });
     connect(t.buttonAddHigher, &QPushButton::clicked, this, [this] { addThreshold(true); });
     connect(t.histogram, &HistogramWidget::valueClicked, this,
@@ -338,10 +373,31 @@ void TaskExtraction::startRun()
     }
     optionsUi->labelStatus->setText(tr("Analysing the cloud..."));
     optionsUi->progressBar->setValue(0);
+    // The bar shows the share only: the stage's name goes into the status line below it, which
+    // wraps in a narrow panel.
     optionsUi->progressBar->setFormat(QLatin1String("%p%"));
+    runClock.start();
+    cancelling = false;
     setRunning(true);
     setRunState("running");
     run->start(std::move(in));
+}
+
+void TaskExtraction::showProgress(int percent, const QString& stage)
+{
+    optionsUi->progressBar->setValue(percent);
+    if (cancelling) {
+        return; // "Cancelling..." stays until the run stops
+    }
+    const double left =
+        featurelines::cli::secondsLeft(percent / 100.0, runClock.elapsed() / 1000.0);
+    QString text = tr("Analysing: %1").arg(stage);
+    if (std::isfinite(left)) {
+        text += left < 60.0
+                    ? tr(", about %1 s left").arg(std::max(1L, std::lround(std::ceil(left))))
+                    : tr(", about %1 min left").arg(std::lround(std::ceil(left / 60.0)));
+    }
+    optionsUi->labelStatus->setText(text);
 }
 
 void TaskExtraction::setRunning(bool running)
@@ -390,7 +446,8 @@ void TaskExtraction::runFinished()
     input.options.progress = nullptr;
     adoptAnalysis();
     const size_t count = analysis.regions ? analysis.regions->geometry.size() : 0;
-    QString status = tr("%1 points, spacing %2, %3 smooth region(s).")
+    QString status = tr("%1 points, %2 apart on average (spacing), %3 part(s) between sharp "
+                        "edges (smooth regions).")
                          .arg(analysis.geometry->inputToPoint.size())
                          .arg(shortNumber(analysis.geometry->spacing))
                          .arg(count);
@@ -406,7 +463,8 @@ void TaskExtraction::runFinished()
             }
         }
         if (!coarse.isEmpty()) {
-            status += QLatin1Char(' ') + tr("Curvature at a coarser scale (noise): region %1.")
+            status += QLatin1Char(' ') + tr("Noisy: curvature measured at a coarser scale in "
+                                            "region %1.")
                                              .arg(coarse.join(QLatin1String(", ")));
         }
     }
@@ -445,8 +503,9 @@ void TaskExtraction::adoptAnalysis()
         for (Region& r : regions) {
             r.points = static_cast<int>(geometry[static_cast<size_t>(r.id)].members.size());
             if (r.choosing) {
-                search(r, r.lower, r.upper);
+                startChoosing(r, r.lower, r.upper, !std::isnan(r.upper));
             }
+            r.automaticKnown = false;
         }
     } else {
         if (regionsInitialised) {
@@ -499,7 +558,7 @@ void TaskExtraction::initialiseRegions()
         r.candidate = none;
         r.choosing = r.accepted.empty();
         if (r.choosing) {
-            search(r, none, none);
+            startChoosing(r, none, none, true);
         }
         regions.push_back(r);
     }
@@ -529,6 +588,17 @@ void TaskExtraction::acceptCandidate()
     if (!r || !r->choosing || !std::isfinite(r->candidate)) {
         return;
     }
+    if (const featurelines::RegionGeometry* g = currentGeometry()) {
+        const double repeated =
+            FeatureLines::repeatedThreshold(*g, input.options.smooth, r->candidate, r->accepted);
+        if (!std::isnan(repeated)) {
+            thresholdsUi->labelMessage->setText(
+                tr("\u03c4 = %1 gives the same patches as the accepted %2: its lines would repeat "
+                   "those. Choose another candidate.")
+                    .arg(shortNumber(r->candidate), shortNumber(repeated)));
+            return;
+        }
+    }
     r->accepted.push_back(r->candidate);
     r->choosing = false;
     thresholdsUi->labelMessage->clear();
@@ -537,38 +607,139 @@ void TaskExtraction::acceptCandidate()
     refresh();
 }
 
-void TaskExtraction::lowerCandidate()
+bool TaskExtraction::startChoosing(Region& r, double lower, double upper, bool down)
+{
+    r.lower = lower;
+    r.upper = upper;
+    r.seen.clear();
+    r.candidate = none;
+    return findCandidate(r, lower, upper, down);
+}
+
+bool TaskExtraction::findCandidate(Region& r, double lower, double upper, bool down)
+{
+    const featurelines::RegionGeometry* g = nullptr;
+    try {
+        g = &FeatureLines::regionGeometry(analysis, r.id);
+    } catch (const std::invalid_argument& e) {
+        r.note = QString::fromUtf8(e.what());
+        return false;
+    }
+    // Each pass narrows the range past the threshold it rejects; the Automatic mode's limit of
+    // searches bounds them.
+    QStringList repeats;
+    for (int pass = 0; pass < std::max(1, input.options.smooth.automatic.maxSearches); ++pass) {
+        Region trial = r;
+        if (!search(trial, lower, upper)) {
+            r.note = repeats.isEmpty() ? trial.note
+                                       : tr("the only valleys there (%1) repeat the lines of an "
+                                            "accepted threshold")
+                                             .arg(repeats.join(QLatin1String(", ")));
+            return false;
+        }
+        const double t = trial.candidate;
+        if (std::isnan(FeatureLines::repeatedThreshold(*g, input.options.smooth, t, r.accepted))) {
+            r.candidate = t;
+            r.note.clear();
+            r.seen.insert(std::upper_bound(r.seen.begin(), r.seen.end(), t), t);
+            return true;
+        }
+        repeats << shortNumber(t);
+        // Beyond the repeated one, the way the search goes; no progress: nothing beyond.
+        if (down ? !(t < upper || std::isnan(upper)) : !(t > lower || std::isnan(lower))) {
+            break;
+        }
+        (down ? upper : lower) = t;
+    }
+    r.note = tr("the only valleys there (%1) repeat the lines of an accepted threshold")
+                 .arg(repeats.join(QLatin1String(", ")));
+    return false;
+}
+
+void TaskExtraction::stepCandidate(bool higher)
 {
     Region* r = currentRegion();
     if (!r || !r->choosing || !std::isfinite(r->candidate)) {
         return;
     }
-    Region trial = *r;
-    if (search(trial, r->lower, r->candidate)) {
-        *r = trial;
-        thresholdsUi->labelMessage->clear();
+    // The history first: the nearest candidate of this stage that way.
+    const auto next = higher ? std::upper_bound(r->seen.begin(), r->seen.end(), r->candidate)
+                             : std::lower_bound(r->seen.begin(), r->seen.end(), r->candidate);
+    if (higher && next != r->seen.end()) {
+        r->candidate = *next;
+    } else if (!higher && next != r->seen.begin()) {
+        r->candidate = *std::prev(next);
     } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No lower valley: %1. The candidate stays.").arg(trial.note));
+        // Sec. 2.3: a new search in the values below (above) the candidate, between the
+        // accepted thresholds around it.
+        Region trial = *r;
+        const bool found = higher ? findCandidate(trial, r->candidate, r->upper, false)
+                                  : findCandidate(trial, r->lower, r->candidate, true);
+        if (!found) {
+            thresholdsUi->labelMessage->setText(
+                (higher ? tr("No higher level found (no valley above): %1. The proposal stays.")
+                        : tr("No lower level found (no valley below): %1. The proposal stays."))
+                    .arg(trial.note));
+            refresh();
+            return;
+        }
+        *r = trial;
     }
+    thresholdsUi->labelMessage->clear();
     refresh();
 }
 
-void TaskExtraction::higherCandidate()
+const std::vector<double>& TaskExtraction::thresholdsInUse(Region& r)
 {
-    Region* r = currentRegion();
-    if (!r || !r->choosing || !std::isfinite(r->candidate)) {
-        return;
+    if (!r.accepted.empty()) {
+        return r.accepted;
     }
-    Region trial = *r;
-    if (search(trial, r->candidate, r->upper)) {
-        *r = trial;
-        thresholdsUi->labelMessage->clear();
-    } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No higher valley: %1. The candidate stays.").arg(trial.note));
+    if (!r.automaticKnown) {
+        r.automatic.clear();
+        try {
+            r.automatic = FeatureLines::automaticRegionThresholds(
+                FeatureLines::regionGeometry(analysis, r.id), input.options.smooth);
+        } catch (const std::invalid_argument&) {
+            // No valley, no region: no automatic threshold either.
+        }
+        r.automaticKnown = true;
     }
-    refresh();
+    return r.automatic;
+}
+
+QString TaskExtraction::untouchedRegionsNote()
+{
+    if (regions.size() < 2) {
+        return {};
+    }
+    QStringList kept;
+    QStringList without;
+    for (Region& r : regions) {
+        if (!r.accepted.empty()) {
+            continue;
+        }
+        QStringList values;
+        for (double t : thresholdsInUse(r)) {
+            values << shortNumber(t);
+        }
+        if (values.isEmpty()) {
+            without << QString::number(r.id);
+        } else {
+            kept << tr("%1 (%2)").arg(r.id).arg(values.join(QLatin1String(", ")));
+        }
+    }
+    QString note;
+    if (!kept.isEmpty()) {
+        note += tr("Regions without a threshold of yours keep the automatic ones: %1.")
+                    .arg(kept.join(QLatin1String("; ")));
+    }
+    if (!without.isEmpty()) {
+        note += (note.isEmpty() ? QString() : QStringLiteral(" ")) +
+                tr("<b>No smooth lines</b> in region(s) %1: no threshold of yours and no automatic "
+                   "one.")
+                    .arg(without.join(QLatin1String(", ")));
+    }
+    return note;
 }
 
 void TaskExtraction::backToLines()
@@ -591,15 +762,16 @@ void TaskExtraction::addThreshold(bool higher)
     // above the highest.
     const auto [lo, hi] = std::minmax_element(r->accepted.begin(), r->accepted.end());
     Region trial = *r;
-    trial.lower = higher ? *hi : none;
-    trial.upper = higher ? none : *lo;
     trial.choosing = true;
-    if (search(trial, trial.lower, trial.upper)) {
+    // Going away from the accepted threshold it starts at, past any that would repeat it.
+    if (startChoosing(trial, higher ? *hi : none, higher ? none : *lo, !higher)) {
         *r = trial;
         thresholdsUi->labelMessage->clear();
     } else {
-        thresholdsUi->labelMessage->setText(
-            tr("No %1 valley: %2").arg(higher ? tr("higher") : tr("lower")).arg(trial.note));
+        thresholdsUi->labelMessage->setText((higher
+                                                 ? tr("No higher level found (no valley above): %1")
+                                                 : tr("No lower level found (no valley below): %1"))
+                                                .arg(trial.note));
     }
     refresh();
 }
@@ -625,7 +797,8 @@ void TaskExtraction::chooseValue(double value)
     r->candidate = value;
     r->choosing = true;
     r->note.clear();
-    thresholdsUi->labelMessage->setText(tr("Candidate chosen in the histogram."));
+    r->seen.assign(1, value);
+    thresholdsUi->labelMessage->setText(tr("Level chosen in the histogram."));
     refresh();
 }
 
@@ -671,14 +844,17 @@ void TaskExtraction::writeThresholds()
         runLine(obj + ".RegionThresholds = {}");
         return;
     }
-    // Several regions: each its own list; regions without one get none (Thresholds empty).
+    // Several regions: each its own list. A region without an accepted threshold keeps the
+    // thresholds the Automatic mode gives it (its lines do not vanish because another region
+    // went Explicit); one without those either gets none (Thresholds empty).
     std::string map;
-    for (const Region& r : regions) {
-        if (r.accepted.empty()) {
+    for (Region& r : regions) {
+        const std::vector<double>& thresholds = thresholdsInUse(r);
+        if (thresholds.empty()) {
             continue;
         }
         std::string text;
-        for (double t : list(r.accepted)) {
+        for (double t : list(thresholds)) {
             text += (text.empty() ? "" : " ") + pythonNumber(t);
         }
         map += (map.empty() ? "'" : ", '") + std::to_string(r.id) + "': '" + text + "'";
@@ -799,8 +975,9 @@ void TaskExtraction::refreshStage()
     thresholdsWidget->setProperty("candidate", r && r->choosing ? r->candidate : none);
     thresholdsWidget->setProperty("region", r ? r->id : -1);
     if (!analysed || !r) {
-        t.labelStage->setText(analysed ? tr("The cloud has no smooth region to threshold.")
-                                       : tr("The thresholds follow the analysis."));
+        t.labelStage->setText(analysed ? tr("The cloud has no part between sharp edges (smooth "
+                                            "region) to look for fillet borders in.")
+                                       : tr("The curvature levels follow the analysis above."));
         t.stageStack->setEnabled(false);
         t.buttonBack->setVisible(false);
         return;
@@ -818,26 +995,29 @@ void TaskExtraction::refreshStage()
         t.buttonHigher->setEnabled(has);
         t.buttonBack->setVisible(!r->accepted.empty());
         if (!has) {
-            t.labelStage->setText(tr("<b>No candidate threshold</b>: %1. Click in the histogram "
+            t.labelStage->setText(tr("<b>No candidate threshold</b> (no curvature level to "
+                                     "propose): %1. Click in the histogram "
                                      "to choose one.")
                                       .arg(r->note.toHtmlEscaped()));
             return;
         }
         QString counts;
         if (labelCounts.size() == 4) {
-            counts = tr("<br>Points: %1 low, %2 inner, %3 border, %4 noisy.")
+            counts = tr("<br>Points: %1 flatter (low), %2 more curved (inner), %3 at the change "
+                        "(border), %4 isolated (noisy).")
                          .arg(labelCounts[0])
                          .arg(labelCounts[1])
                          .arg(labelCounts[2])
                          .arg(labelCounts[3]);
         }
         t.labelStage->setText(
-            tr("<b>Candidate \u03c4 = %1</b>%2. Does it divide the points right? Accept it, or "
-               "search a lower or higher valley.%3")
+            tr("<b>Proposed curvature level %1</b> (threshold \u03c4)%2. Do the green areas "
+               "ringed in black show the fillets or corners you want lines around? Accept, or "
+               "try a lower or higher level.%3")
                 .arg(shortNumber(r->candidate))
                 .arg(accepted.isEmpty()
                          ? QString()
-                         : tr(" (accepted: %1)").arg(accepted.join(QLatin1String(", "))))
+                         : tr("; accepted: %1").arg(accepted.join(QLatin1String(", "))))
                 .arg(counts));
         return;
     }
@@ -847,11 +1027,14 @@ void TaskExtraction::refreshStage()
     if (const FeatureLines::Extraction* e = extraction()) {
         std::tie(lines, closed) = regionLines(*e, r->id);
     }
-    t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b>, at \u03c4 = %3. Are the lines "
-                             "complete? Done, or add a threshold.")
+    const QString others = untouchedRegionsNote();
+    t.labelStage->setText(tr("<b>%1 smooth line(s), %2 closed</b> (fillet borders) at curvature "
+                             "level \u03c4 = %3. Are all the lines there? Done, or add a level "
+                             "for lines between flatter or more curved surfaces.")
                               .arg(lines)
                               .arg(closed)
-                              .arg(accepted.join(QLatin1String(", "))));
+                              .arg(accepted.join(QLatin1String(", "))) +
+                          (others.isEmpty() ? QString() : QStringLiteral("<br>") + others));
 }
 
 std::vector<int> TaskExtraction::labelsPerInputPoint(const Region* r,
@@ -900,8 +1083,8 @@ void TaskExtraction::refreshPreview()
             colours[i] = PointPreview::labelColour(perInput[i]);
         }
         QString legend;
-        const char* names[] = {QT_TR_NOOP("low"), QT_TR_NOOP("inner"), QT_TR_NOOP("border"),
-                               QT_TR_NOOP("noisy")};
+        const char* names[] = {QT_TR_NOOP("flatter (low)"), QT_TR_NOOP("curved (inner)"),
+                               QT_TR_NOOP("change (border)"), QT_TR_NOOP("isolated (noisy)")};
         for (int l = 0; l < 4; ++l) {
             legend += QString::fromUtf8("<span style=\"color:%1\">\u25a0</span> %2&nbsp;&nbsp; ")
                           .arg(colourName(PointPreview::labelColour(l)), tr(names[l]));
@@ -929,8 +1112,8 @@ void TaskExtraction::refreshPreview()
         for (size_t i = 0; i < colours.size(); ++i) {
             colours[i] = PointPreview::patchColour(patch[i]);
         }
-        t.labelLegend->setText(tr("%1 patch(es): the connected points between the same two "
-                                  "thresholds.")
+        t.labelLegend->setText(tr("%1 surface patch(es): connected points between the same two "
+                                  "curvature levels.")
                                    .arg(next));
     }
     if (preview) {

@@ -25,6 +25,7 @@
 #include <Base/Vector3D.h>
 #include <Gui/TaskView/TaskDialog.h>
 
+#include <QElapsedTimer>
 #include <QString>
 
 #include <map>
@@ -88,6 +89,13 @@ private:
         double upper = 0.0;
         /// Why there is no candidate, or why the last search found none.
         QString note;
+        /// The candidates of this stage (a), low to high: Lower and Higher step through them
+        /// before they search further, so Lower then Higher comes back where it started.
+        std::vector<double> seen;
+        /// The thresholds of the Automatic mode, which a region without an accepted threshold
+        /// keeps (computed when first needed).
+        std::vector<double> automatic;
+        bool automaticKnown = false;
     };
 
     enum class PreviewMode
@@ -105,6 +113,8 @@ private:
     void startRun();
     void runFinished();
     void setRunning(bool running);
+    /// The bar at `percent`, the stage and the time left (secondsLeft) in the status line.
+    void showProgress(int percent, const QString& stage);
     void setRunState(const char* state);
     void adoptAnalysis();
     void initialiseRegions();
@@ -112,9 +122,22 @@ private:
     /// Sec. 2.3: the candidate of `r` among the values in (lower, upper]; false (and the note
     /// set) when those values have no valley.
     bool search(Region& r, double lower, double upper);
+    /// Stage (a) of `r` between `lower` and `upper` (NaN: open): a new history, and its first
+    /// candidate (findCandidate, going `down` from upper or up from lower).
+    bool startChoosing(Region& r, double lower, double upper, bool down);
+    /// The valley search in (lower, upper], passing over every threshold that repeats an
+    /// accepted one (repeatedThreshold: the same patches) towards lower (`down`) or upper;
+    /// the candidate found joins the history. False (and the note set) when none is left.
+    bool findCandidate(Region& r, double lower, double upper, bool down);
+    /// Lower (`higher` false) or Higher: the next candidate of the history that way, or a new
+    /// search beyond the last.
+    void stepCandidate(bool higher);
+    /// The thresholds the lines of region `r` use: its accepted ones, or the Automatic mode's.
+    const std::vector<double>& thresholdsInUse(Region& r);
+    /// "Regions 1, 3 keep the automatic thresholds..." for the regions without an accepted
+    /// threshold; empty with one region.
+    QString untouchedRegionsNote();
     void acceptCandidate();
-    void lowerCandidate();
-    void higherCandidate();
     void backToLines();
     void addThreshold(bool higher);
     void chooseValue(double value);
@@ -150,6 +173,9 @@ private:
     std::map<std::string, QWidget*> optionWidgets;
 
     AnalysisRun* run = nullptr;
+    /// Time since the run started, for the time left; whether Cancel run was pressed.
+    QElapsedTimer runClock;
+    bool cancelling = false;
     bool analysed = false;
     bool regionsInitialised = false;
     FeatureLines::CloudAnalysis analysis;

@@ -21,7 +21,14 @@
 #include <QMenu>
 #include <QMessageBox>
 
+#include <Gui/Application.h>
+#include <Gui/Document.h>
+#include <Mod/Points/App/PointsFeature.h>
+
+#include <cmath>
+
 #include "ExtractionFeature.h"
+#include "PointPreview.h"
 #include "TaskExtraction.h"
 
 using namespace FeatureLinesGui;
@@ -76,6 +83,57 @@ void applyColours(App::PropertyColorList& property, const std::vector<App::Color
     property.touch();
 }
 
+const char* colourPointsModes[] = {"Nothing", "Region", "Patch", "Label", "Curvature", nullptr};
+
+/// Blue (flat) to green to red (curved) over the 2nd..98th percentile of the finite values;
+/// grey for NaN (points off every region).
+std::vector<Base::Vector3f> curvatureColours(const std::vector<double>& values)
+{
+    std::vector<double> finite;
+    for (double v : values) {
+        if (std::isfinite(v)) {
+            finite.push_back(v);
+        }
+    }
+    std::sort(finite.begin(), finite.end());
+    const double lo = finite.empty() ? 0.0 : finite[finite.size() / 50];
+    const double hi = finite.empty() ? 1.0 : finite[finite.size() - 1 - finite.size() / 50];
+    std::vector<Base::Vector3f> colours;
+    colours.reserve(values.size());
+    for (double v : values) {
+        if (!std::isfinite(v)) {
+            colours.emplace_back(0.6f, 0.6f, 0.6f);
+            continue;
+        }
+        const float t = hi > lo ? float(std::clamp((v - lo) / (hi - lo), 0.0, 1.0)) : 0.f;
+        colours.emplace_back(t, 1.f - std::abs(2.f * t - 1.f), 1.f - t);
+    }
+    return colours;
+}
+
+/// Per point of the cloud its colour by `mode` (ColourPoints), from the extraction's per-point
+/// outputs; empty when they do not match the cloud (not computed yet).
+std::vector<Base::Vector3f> pointColours(const FeatureLines::Extraction& e, int mode, size_t count)
+{
+    std::vector<Base::Vector3f> colours;
+    if (mode == 4) {
+        const std::vector<double>& h = e.PointCurvature.getValues();
+        return h.size() == count ? curvatureColours(h) : colours;
+    }
+    const std::vector<long>& values = mode == 1   ? e.PointRegion.getValues()
+                                      : mode == 2 ? e.PointPatch.getValues()
+                                                  : e.PointLabel.getValues();
+    if (values.size() != count) {
+        return colours;
+    }
+    colours.reserve(count);
+    for (long v : values) {
+        colours.push_back(mode == 3 ? PointPreview::labelColour(int(v))
+                                    : PointPreview::patchColour(int(v)));
+    }
+    return colours;
+}
+
 } // namespace
 
 ViewProviderExtraction::ViewProviderExtraction()
@@ -88,9 +146,46 @@ ViewProviderExtraction::ViewProviderExtraction()
                       App::Prop_None, "Colour of the smooth edges (fillet borders).");
     ADD_PROPERTY_TYPE(BoundaryColor, (App::Color(0.00f, 0.45f, 0.90f)), "Feature lines",
                       App::Prop_None, "Colour of the boundary of an open cloud.");
+    ADD_PROPERTY_TYPE(ColourPoints, (0L), "Feature lines", App::Prop_None,
+                      "Draw the source cloud coloured by the extraction: Nothing, Region, "
+                      "Patch, Label (low blue, inner green, border black, noisy red) or "
+                      "Curvature (blue flat to red curved).");
+    ColourPoints.setEnums(colourPointsModes);
     // Wires on a dense cloud: thin lines vanish among the points.
     LineWidth.setValue(3.0f);
     PointSize.setValue(3.0f);
+}
+
+ViewProviderExtraction::~ViewProviderExtraction() = default;
+
+void ViewProviderExtraction::colourPoints()
+{
+    const auto* e = dynamic_cast<const FeatureLines::Extraction*>(getObject());
+    const auto* cloud = e ? dynamic_cast<const Points::Feature*>(e->Source.getValue()) : nullptr;
+    const int mode = ColourPoints.getValue();
+    if (mode == 0 || editing || !cloud || !e->getDocument()) {
+        colouring.reset();
+        return;
+    }
+    const Points::PointKernel& kernel = cloud->Points.getValue();
+    std::vector<Base::Vector3f> points;
+    points.reserve(kernel.size());
+    for (auto it = kernel.begin(); it != kernel.end(); ++it) {
+        points.emplace_back(float(it->x), float(it->y), float(it->z));
+    }
+    const std::vector<Base::Vector3f> colours = pointColours(*e, mode, points.size());
+    if (colours.empty()) {
+        colouring.reset(); // not computed yet: the cloud as it is
+        return;
+    }
+    Gui::Document* document = Gui::Application::Instance->getDocument(e->getDocument());
+    if (!document) {
+        return;
+    }
+    if (!colouring) {
+        colouring = std::make_unique<PointPreview>(document, e->Source.getValue());
+    }
+    colouring->show(points, colours);
 }
 
 void ViewProviderExtraction::updateData(const App::Property* prop)
@@ -102,6 +197,11 @@ void ViewProviderExtraction::updateData(const App::Property* prop)
               prop == &e->BoundaryWires)) {
         colourByType();
     }
+    if (e && ColourPoints.getValue() != 0 &&
+        (prop == &e->PointRegion || prop == &e->PointPatch || prop == &e->PointLabel ||
+         prop == &e->PointCurvature)) {
+        colourPoints();
+    }
 }
 
 void ViewProviderExtraction::onChanged(const App::Property* prop)
@@ -111,6 +211,9 @@ void ViewProviderExtraction::onChanged(const App::Property* prop)
     if (prop == &SharpColor || prop == &SmoothColor || prop == &BoundaryColor ||
         (prop == &Visibility && Visibility.getValue())) {
         colourByType();
+    }
+    if (prop == &ColourPoints) {
+        colourPoints();
     }
 }
 
@@ -160,6 +263,9 @@ bool ViewProviderExtraction::setEdit(int ModNum)
         return false;
     }
     Gui::Selection().clearSelection();
+    // The panel shows its own colours of the cloud meanwhile.
+    editing = true;
+    colourPoints();
     Gui::Control().showDialog(new TaskExtraction(this));
     return true;
 }
@@ -169,6 +275,10 @@ void ViewProviderExtraction::unsetEdit(int ModNum)
     // ViewProviderDragger::unsetEdit closes the task dialog (deferred when it is the dialog's
     // own accept or reject that resets the edit).
     PartGui::ViewProviderPart::unsetEdit(ModNum);
+    if (ModNum == ViewProvider::Default && editing) {
+        editing = false;
+        colourPoints();
+    }
 }
 
 void ViewProviderExtraction::setupContextMenu(QMenu* menu, QObject* receiver, const char* member)

@@ -7,7 +7,11 @@
 #include <App/PropertyStandard.h>
 #include <Mod/Part/Gui/ViewProvider.h>
 
+#include <memory>
+
 namespace FeatureLinesGui {
+
+class PointPreview;
 
 class ViewProviderExtraction : public PartGui::ViewProviderPart
 {
@@ -21,6 +25,12 @@ public:
     App::PropertyColor SharpColor;
     App::PropertyColor SmoothColor;
     App::PropertyColor BoundaryColor;
+    /// The source cloud drawn coloured by the extraction's per-point outputs: Nothing (the
+    /// cloud as it is), Region, Patch, Label (Fig. 7 a colours) or Curvature (blue flat to red
+    /// curved). Kept with the view; the commands Colour cloud by ... set it.
+    App::PropertyEnumeration ColourPoints;
+
+    ~ViewProviderExtraction() override;
 
     void updateData(const App::Property* prop) override;
     bool setEdit(int ModNum) override;
@@ -38,6 +48,12 @@ private:
     /// their line's colour; does nothing while the outputs are half updated (their counts do
     /// not add up to Shape's).
     void colourByType();
+    /// Shows the cloud in the ColourPoints colours (or removes them): not while the task panel
+    /// shows its own preview.
+    void colourPoints();
+
+    std::unique_ptr<PointPreview> colouring;
+    bool editing = false;
 };
 
 } // namespace FeatureLinesGui

@@ -75,9 +75,10 @@ struct OutputFile
     std::string path;
 };
 
-/// Checks the output files of a run before any work is done. UsageError (exit 2) for an empty
-/// name, an output that is the input, or two outputs that are one file; std::runtime_error
-/// (exit 1) for a folder that does not exist or cannot be written, and a name that is a folder.
+/// Checks the output files of a run before any work is done; "-" is standard output. UsageError
+/// (exit 2) for an empty name, two outputs to standard output, an output that is the input, or two
+/// outputs that are one file; std::runtime_error (exit 1) for a folder that does not exist or
+/// cannot be written, and a name that is a folder.
 inline void checkOutputs(const std::string& input, const std::vector<OutputFile>& outputs)
 {
     for (std::size_t i = 0; i < outputs.size(); ++i) {
@@ -85,7 +86,16 @@ inline void checkOutputs(const std::string& input, const std::vector<OutputFile>
         if (o.path.empty()) {
             throw UsageError(o.option + ": the output file name is empty");
         }
-        if (sameFile(o.path, input)) {
+        if (o.path == "-") {
+            for (std::size_t j = 0; j < i; ++j) {
+                if (outputs[j].path == "-") {
+                    throw UsageError(o.option + " and " + outputs[j].option +
+                                     " cannot both write to standard output (-)");
+                }
+            }
+            continue; // standard output: written directly (writeWhole)
+        }
+        if (input != "-" && sameFile(o.path, input)) {
             throw UsageError(o.option + " " + o.path +
                              " is the input file; it would be overwritten: choose another name");
         }
@@ -125,9 +135,18 @@ inline void checkOutputs(const std::string& input, const std::vector<OutputFile>
 /// and synced to the disk, then renamed over `path`, so a failed or cut-short write leaves a
 /// previous file of that name as it was. A symbolic link is followed (the file it names is
 /// replaced, the link kept); a path that exists and is not a regular file (a device such as
-/// /dev/stdout) is written directly. Throws std::runtime_error naming the file.
+/// /dev/stdout) is written directly, and so is "-", standard output. Throws
+/// std::runtime_error naming the file.
 inline void writeWhole(const std::string& path, const std::string& content)
 {
+    if (path == "-") {
+        std::fwrite(content.data(), 1, content.size(), stdout);
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+            throw std::runtime_error("standard output: writing failed (" +
+                                     std::string(std::strerror(errno)) + ")");
+        }
+        return;
+    }
     std::error_code error;
     const bool direct = fs::exists(path, error) && !fs::is_regular_file(path, error);
     const std::string finalPath = linkTarget(path);

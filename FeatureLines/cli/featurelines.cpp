@@ -11,6 +11,7 @@
 //
 // Outputs are checked before any work, then written whole or not at all (OutputFiles.h).
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <iomanip>
 #include <iostream>
@@ -24,14 +25,24 @@
 
 #include "FeatureLines/Extraction.h"
 #include "FeatureLines/cli/Arguments.h"
+#include "FeatureLines/cli/Inputs.h"
 #include "FeatureLines/cli/Json.h"
 #include "FeatureLines/cli/OutputFiles.h"
+#include "FeatureLines/cli/Progress.h"
 #include "FeatureLines/curvature/Curvature.h"
 #include "FeatureLines/curvature/Smoothing.h"
 #include "FeatureLines/io/CloudIO.h"
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/HistogramThreshold.h"
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
+
+#ifndef FEATURELINES_VERSION
+#define FEATURELINES_VERSION "unknown"
+#endif
 
 namespace featurelines::cli {
 namespace {
@@ -73,7 +84,13 @@ OptionSpec signedOption()
             "meaningful within one consistently oriented region (default: |H|)"};
 }
 
-/// The single positional argument INPUT, or a UsageError.
+OptionSpec formatOption()
+{
+    return {"--format", "F",
+            "the format of standard input (INPUT -): xyz, txt, asc, csv, ply or pcd (default xyz)"};
+}
+
+/// The single positional argument INPUT ("-": standard input), or a UsageError.
 std::string inputPath(const Arguments& a)
 {
     if (a.positional().empty()) {
@@ -113,7 +130,7 @@ void requireBelowPointCount(const Arguments& a, const std::string& name, long va
 {
     if (a.has(name) && value >= points) {
         throw std::runtime_error(name + " " + std::to_string(value) +
-                                 " must be below the point count of " + input + " (" +
+                                 " must be below the point count of " + inputName(input) + " (" +
                                  std::to_string(points) + ")");
     }
 }
@@ -169,7 +186,7 @@ int runInfo(const Arguments& a)
     const std::string input = inputPath(a);
     const int requestedK = neighbourCount(a);
     const int threads = threadCount(a);
-    const PointMatrix P = readCloud(input);
+    const PointMatrix P = readInput(input, standardInputFormat(a, input == "-"));
     const Eigen::RowVector3d lo = P.colwise().minCoeff();
     const Eigen::RowVector3d hi = P.colwise().maxCoeff();
     const auto triple = [](const Eigen::RowVector3d& v) {
@@ -204,8 +221,9 @@ int runCurvature(const Arguments& a)
     }
     const std::string output = a.text("--output");
     const CurvatureSettings settings = curvatureSettings(a);
+    const std::string format = standardInputFormat(a, input == "-");
     checkOutputs(input, {{"--output", output}});
-    const PointMatrix cloud = readCloud(input);
+    const PointMatrix cloud = readInput(input, format);
     requireBelowPointCount(a, "--k", settings.neighbours.k, input, cloud.rows());
     const Eigen::VectorXd H = curvatureOf(settings, cloud);
 
@@ -264,7 +282,7 @@ int runThreshold(const Arguments& a)
                                     : 0.0;
     const CurvatureSettings settings = curvatureSettings(a);
 
-    const PointMatrix cloud = readCloud(input);
+    const PointMatrix cloud = readInput(input, standardInputFormat(a, input == "-"));
     requireBelowPointCount(a, "--k", settings.neighbours.k, input, cloud.rows());
     requireBelowPointCount(a, "--bins", options.bins, input, cloud.rows());
     const Eigen::VectorXd H = curvatureOf(settings, cloud);
@@ -466,60 +484,217 @@ void writeLinesFile(const std::string& output, const std::string& input, Eigen::
     writeWhole(output, result.str() + "\n");
 }
 
-/// The labels file (--labels): per input point its region, patch, label and curvature.
+/// The labels file (--labels): per input point its region, patch, label and curvature; -1
+/// where a point has none (the Python API's convention), NaN curvature off every region.
 void writeLabelsFile(const std::string& file, const ExtractionResult& r)
 {
     std::ostringstream labels;
-    labels << "# region patch label curvature (label: 0 low, 1 inner, 2 border, 3 noisy, "
-              "255 outside every region)\n"
+    labels << "# region patch label curvature (region -1: on a sharp edge's band; patch -1: "
+              "in no region; label: 0 low, 1 inner, 2 border, 3 noisy, -1 outside every region)\n"
            << std::setprecision(9);
     for (std::size_t i = 0; i < r.region.size(); ++i) {
-        labels << r.region[i] << ' ' << r.patch[i] << ' ' << static_cast<int>(r.label[i]) << ' '
+        const int label = r.label[i] == PointLabel::Outside ? -1 : static_cast<int>(r.label[i]);
+        labels << r.region[i] << ' ' << r.patch[i] << ' ' << label << ' '
                << r.curvature[static_cast<Eigen::Index>(i)] << '\n';
     }
     writeWhole(file, labels.str());
 }
 
-/// The one-line summary on stdout, and a note when there is no line.
-void printLineSummary(const ExtractionResult& r)
+/// "lines: 12 (sharp 12, smooth 0, boundary 0), closed 12, junctions 8, regions 6".
+std::string lineSummary(const ExtractionResult& r)
 {
     int closed = 0;
     for (const FeatureLine& l : r.lines) {
         closed += l.closed ? 1 : 0;
     }
-    std::cout << "lines: " << r.lines.size() << " (sharp " << r.countLines(LineType::Sharp)
-              << ", smooth " << r.countLines(LineType::Smooth) << ", boundary "
-              << r.countLines(LineType::Boundary) << "), closed " << closed << ", junctions "
-              << r.junctions.rows() << ", regions " << r.regions.size() << "\n";
-    if (r.lines.empty()) {
-        std::cout
-            << "no feature lines: the cloud has no sharp edge, boundary or curvature valley\n";
+    std::ostringstream out;
+    out << "lines: " << r.lines.size() << " (sharp " << r.countLines(LineType::Sharp) << ", smooth "
+        << r.countLines(LineType::Smooth) << ", boundary " << r.countLines(LineType::Boundary)
+        << "), closed " << closed << ", junctions " << r.junctions.rows() << ", regions "
+        << r.regions.size();
+    return out.str();
+}
+
+/// Where one input's results go: its lines file and, with --labels, its labels file ("" none).
+struct ExtractTarget
+{
+    std::string input;
+    std::string lines;
+    std::string labels;
+};
+
+/// How progress is shown (Progress.h): not at all, rewritten in place, or line by line.
+enum class ProgressMode
+{
+    None,
+    Terminal,
+    Lines
+};
+
+ProgressMode progressMode(const Arguments& a)
+{
+    if (a.has("--quiet") && a.has("--progress")) {
+        throw UsageError("--quiet and --progress exclude each other");
     }
+    if (a.has("--quiet")) {
+        return ProgressMode::None;
+    }
+    if (a.has("--progress")) {
+        return ProgressMode::Lines;
+    }
+#if __has_include(<unistd.h>)
+    return isatty(STDERR_FILENO) ? ProgressMode::Terminal : ProgressMode::None;
+#else
+    return ProgressMode::None;
+#endif
+}
+
+/// The folder `option` names in a batch; std::runtime_error (bad input) unless it is one.
+std::filesystem::path batchFolder(const Arguments& a, const std::string& option,
+                                  const std::string& what)
+{
+    const std::string folder = a.text(option);
+    if (folder == "-") {
+        throw UsageError(option + " - (standard output) takes one input only, not several");
+    }
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) {
+        throw std::runtime_error(folder + ": is not a folder; with several inputs " + option +
+                                 " names the folder for their " + what);
+    }
+    return folder;
+}
+
+/// The inputs of extract and their outputs. One INPUT file (or -): -o and --labels name files
+/// (or - for standard output). Several inputs or a folder: -o and --labels name folders, and
+/// INPUT's results are FOLDER/NAME.json and LABELS/NAME.labels.txt (NAME: INPUT's name without
+/// its extension). UsageError for two inputs that would write one file.
+std::vector<ExtractTarget> extractTargets(const Arguments& a)
+{
+    if (a.positional().empty()) {
+        throw UsageError("no INPUT point cloud given");
+    }
+    if (!a.has("--output")) {
+        throw UsageError("no output file given (-o LINES.json; -o FOLDER for several inputs)");
+    }
+    std::error_code error;
+    const bool batch =
+        a.positional().size() > 1 || std::filesystem::is_directory(a.positional()[0], error);
+    if (!batch) {
+        return {{a.positional()[0], a.text("--output"), a.text("--labels")}};
+    }
+    const std::vector<std::string> inputs = expandInputs(a.positional());
+    if (std::find(inputs.begin(), inputs.end(), "-") != inputs.end()) {
+        throw UsageError("standard input (-) can only be the one INPUT, not one of several");
+    }
+    const std::filesystem::path linesFolder = batchFolder(a, "--output", "lines files");
+    const std::filesystem::path labelsFolder =
+        a.has("--labels") ? batchFolder(a, "--labels", "labels files") : std::filesystem::path();
+    std::vector<ExtractTarget> targets;
+    for (const std::string& input : inputs) {
+        const std::string name = std::filesystem::path(input).stem().string();
+        ExtractTarget t{input, (linesFolder / (name + ".json")).string(), {}};
+        if (a.has("--labels")) {
+            t.labels = (labelsFolder / (name + ".labels.txt")).string();
+        }
+        for (const ExtractTarget& other : targets) {
+            if (other.lines == t.lines) {
+                throw UsageError(other.input + " and " + input + " would both write " + t.lines +
+                                 ": rename one of them");
+            }
+        }
+        targets.push_back(t);
+    }
+    return targets;
+}
+
+/// The output files of every target, checked before any work (checkOutputs); in a batch also
+/// no output may be another input.
+void checkTargets(const std::vector<ExtractTarget>& targets)
+{
+    for (const ExtractTarget& t : targets) {
+        std::vector<OutputFile> outputs{{"--output", t.lines}};
+        if (!t.labels.empty()) {
+            outputs.push_back({"--labels", t.labels});
+        }
+        checkOutputs(t.input, outputs);
+        for (const ExtractTarget& other : targets) {
+            for (const OutputFile& o : outputs) {
+                if (&other != &t && sameFile(o.path, other.input)) {
+                    throw UsageError(o.path + " (for " + t.input + ") is the input " + other.input +
+                                     "; it would be overwritten");
+                }
+            }
+        }
+    }
+}
+
+/// One input's extraction: read, extract, write its files. Returns its summary line.
+std::string extractOne(const Arguments& a, const ExtractTarget& t, ExtractionOptions options,
+                       const std::string& format, ProgressMode mode)
+{
+    const PointMatrix cloud = readInput(t.input, format);
+    requireBelowPointCount(a, "--k", options.neighbours.k, t.input, cloud.rows());
+    requireBelowPointCount(a, "--bins", options.smooth.histogram.bins, t.input, cloud.rows());
+    ProgressReport report(std::cerr, inputName(t.input), mode == ProgressMode::Terminal);
+    if (mode != ProgressMode::None) {
+        options.progress = [&report](double done, const std::string& stage) {
+            return report(done, stage);
+        };
+    }
+    ExtractionResult r;
+    try {
+        r = extractFeatureLines(cloud, options);
+    } catch (...) {
+        report.abandon();
+        throw;
+    }
+    if (mode != ProgressMode::None) {
+        report.finish();
+    }
+    writeLinesFile(t.lines, t.input, cloud.rows(), r);
+    if (!t.labels.empty()) {
+        writeLabelsFile(t.labels, r);
+    }
+    return lineSummary(r) + (r.lines.empty() ? "\nno feature lines: the cloud has no sharp edge, "
+                                               "boundary or curvature valley"
+                                             : "");
 }
 
 int runExtract(const Arguments& a)
 {
-    const std::string input = inputPath(a);
-    if (!a.has("--output")) {
-        throw UsageError("no output file given (-o LINES.json)");
-    }
-    const std::string output = a.text("--output");
+    const std::vector<ExtractTarget> targets = extractTargets(a);
     const ExtractionOptions options = extractionOptions(a);
-    std::vector<OutputFile> outputs{{"--output", output}};
-    if (a.has("--labels")) {
-        outputs.push_back({"--labels", a.text("--labels")});
+    const ProgressMode mode = progressMode(a);
+    const std::string format = standardInputFormat(a, targets.front().input == "-");
+    checkTargets(targets);
+    if (targets.size() == 1) {
+        const ExtractTarget& t = targets.front();
+        const std::string summary = extractOne(a, t, options, format, mode);
+        // A result on standard output keeps it clean: the summary goes to standard error.
+        (t.lines == "-" || t.labels == "-" ? std::cerr : std::cout) << summary << "\n";
+        return 0;
     }
-    checkOutputs(input, outputs);
-    const PointMatrix cloud = readCloud(input);
-    requireBelowPointCount(a, "--k", options.neighbours.k, input, cloud.rows());
-    requireBelowPointCount(a, "--bins", options.smooth.histogram.bins, input, cloud.rows());
-    const ExtractionResult r = extractFeatureLines(cloud, options);
-    writeLinesFile(output, input, cloud.rows(), r);
-    if (a.has("--labels")) {
-        writeLabelsFile(a.text("--labels"), r);
+    // A batch: every input is tried; one summary line each, and the exit code 1 when any failed.
+    int failed = 0;
+    for (const ExtractTarget& t : targets) {
+        std::string summary;
+        try {
+            summary = extractOne(a, t, options, format, mode);
+            summary = summary.substr(0, summary.find('\n'));
+        } catch (const std::exception& e) {
+            ++failed;
+            const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+            const std::string reason = memory ? std::string("out of memory") : e.what();
+            const bool named = reason.find(t.input) != std::string::npos;
+            std::cerr << "featurelines: " << (named ? "" : t.input + ": ") << reason << std::endl;
+            summary = "failed";
+        }
+        std::cout << t.input << ": " << summary << std::endl;
     }
-    printLineSummary(r);
-    return 0;
+    std::cout << targets.size() << " inputs: " << targets.size() - failed << " done, " << failed
+              << " failed\n";
+    return failed == 0 ? 0 : 1;
 }
 
 // ---- the table ----------------------------------------------------------------------------
@@ -531,15 +706,17 @@ const std::vector<Command>& commands()
          "point count, bounding box and mean point spacing of a cloud",
          "INPUT [--k N]",
          {{"--k", "N", "neighbours searched for the spacing (default 16; fewer on tiny clouds)"},
+          formatOption(),
           threadsOption()},
          runInfo},
         {"curvature",
          "mean curvature of every point, one value per line in input order (Sec. 2.1)",
          "INPUT -o FILE [--k N] [--signed] [--smooth N]",
-         {{"--output", "FILE", "the file to write", "-o"},
+         {{"--output", "FILE", "the file to write (- for standard output)", "-o"},
           kOption(),
           signedOption(),
           smoothOption(),
+          formatOption(),
           threadsOption()},
          runCurvature},
         {"threshold",
@@ -561,19 +738,24 @@ const std::vector<Command>& commands()
           kOption(),
           signedOption(),
           smoothOption(),
+          formatOption(),
           threadsOption()},
          runThreshold},
         {"extract",
          "closed feature lines: sharp edges, smooth edges (fillet borders) and boundary",
-         "INPUT -o LINES.json [--labels FILE] [--thresholds T1,T2 | --threshold-mode M] "
-         "[--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N]",
+         "INPUT... -o LINES.json|FOLDER [--labels FILE|FOLDER] [--thresholds T1,T2 | "
+         "--threshold-mode M] [--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N] "
+         "[--progress | --quiet]",
          {{"--output", "FILE",
            "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
            "\"points\"}], \"junctions\", \"regions\" (per region: its noise, thresholds used, "
-           "curvature scale and the coarser scales weighed, scale_trials)}",
+           "curvature scale and the coarser scales weighed, scale_trials)}; - for standard "
+           "output. With several INPUTs or a folder: the folder that gets NAME.json for each "
+           "input NAME.ext, one summary line each, exit 1 when any failed",
            "-o"},
           {"--labels", "FILE",
-           "also write per input point: smooth region, patch, Sec. 3 label, curvature"},
+           "also write per input point: smooth region, patch, Sec. 3 label, curvature (-1: no "
+           "region, patch or label); with several inputs the folder for NAME.labels.txt"},
           {"--threshold-mode", "M",
            "automatic (every significant valley per region), first (the first threshold only), "
            "explicit (--thresholds); default automatic"},
@@ -595,7 +777,12 @@ const std::vector<Command>& commands()
           {"--no-sharp", "", "no sharp edges (the whole cloud is one smooth region)"},
           {"--no-smooth", "", "no smooth edges"},
           {"--no-boundary", "", "no boundary lines of an open cloud"},
+          {"--progress", "",
+           "progress and time left on standard error even when it is not a terminal (default: "
+           "shown on a terminal only)"},
+          {"--quiet", "", "no progress on standard error"},
           kOption(),
+          formatOption(),
           threadsOption()},
          runExtract},
     };
@@ -605,9 +792,11 @@ const std::vector<Command>& commands()
 void printOverview(std::ostream& out)
 {
     out << "usage: featurelines COMMAND [OPTIONS] INPUT\n"
-           "       featurelines COMMAND --help\n\n"
+           "       featurelines COMMAND --help\n"
+           "       featurelines --version\n\n"
            "Closed feature lines of point clouds (Demarsin et al. 2008).\n"
-           "INPUT: .xyz .txt .asc .csv (x y z per line), .ply or .pcd.\n\ncommands:\n";
+           "INPUT: .xyz .txt .asc .csv (x y z per line), .ply or .pcd; - for standard input\n"
+           "(--format says which). extract takes several INPUTs or a folder.\n\ncommands:\n";
     for (const Command& c : commands()) {
         out << "  " << c.name << std::string(12 - std::min<std::size_t>(11, c.name.size()), ' ')
             << c.summary << "\n";
@@ -667,6 +856,10 @@ int runMain(const std::vector<std::string>& words)
     }
     if (words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
         printOverview(std::cout);
+        return 0;
+    }
+    if (words[0] == "--version") {
+        std::cout << "featurelines " << FEATURELINES_VERSION << "\n";
         return 0;
     }
     const Command* command = findCommand(words[0]);

@@ -231,6 +231,19 @@ std::pair<int, int> largestPatches(const Eigen::VectorXd& curvature, double low,
 
 } // namespace
 
+std::pair<int, int> largestLevelPatches(const RegionGeometry& region, double low, double tau,
+                                        double high)
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    return largestPatches(region.curvature, std::isnan(low) ? -inf : low, tau,
+                          std::isnan(high) ? inf : high, region.ring);
+}
+
+int minimumPatchPoints(const RegionGeometry& region, const AutomaticThresholdOptions& options)
+{
+    return options.minInnerPoints > 0 ? options.minInnerPoints : 2 * region.neighbours.k();
+}
+
 ThresholdResult regionThreshold(const RegionGeometry& region, const SmoothEdgeOptions& options,
                                 const std::vector<int>& subset)
 {
@@ -294,7 +307,7 @@ void requireAutomaticOptions(const AutomaticThresholdOptions& a)
 AutomaticSearch automaticSearch(const RegionGeometry& region, const SmoothEdgeOptions& options)
 {
     const AutomaticThresholdOptions& a = options.automatic;
-    const int minInner = a.minInnerPoints > 0 ? a.minInnerPoints : 2 * region.neighbours.k();
+    const int minInner = minimumPatchPoints(region, a);
     const double flat = 1.0 / (a.flatRadius * region.spacing);
     return {region,
             options,

@@ -5,6 +5,7 @@
 // Design: docs/design/smooth-edges.md, "Thresholds".
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "FeatureLines/smooth/HistogramThreshold.h"
@@ -43,6 +44,16 @@ struct ThresholdDecision
     /// patches (AutomaticThresholdOptions::maxStraddle).
     double straddle = 0.0;
 };
+
+/// The largest patches of the region's curvature levels (low, tau] and (tau, high] (NaN: no
+/// bound): points of the level whose whole 1-ring is in it too, connected through the 1-rings;
+/// their numbers of points, {above, below}. The automatic mode's patch test, and the task
+/// panel's test that a threshold adds a patch to the accepted ones.
+std::pair<int, int> largestLevelPatches(const RegionGeometry& region, double low, double tau,
+                                        double high);
+
+/// Points a patch needs to count (AutomaticThresholdOptions::minInnerPoints; 0: 2 k).
+int minimumPatchPoints(const RegionGeometry& region, const AutomaticThresholdOptions& options);
 
 /// The automatic mode (see AutomaticThresholdOptions): every threshold searched, in the order
 /// searched, with its decision. The accepted ones' applied values, sorted from high to low,

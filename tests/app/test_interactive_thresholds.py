@@ -161,3 +161,38 @@ class InteractiveThresholdTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class RepeatedThresholdTest(unittest.TestCase):
+    """A candidate that gives the same patches as an accepted threshold (no patch between the
+    two) repeats it; one with the fillets' patches between them does not (the task panel never
+    offers or accepts the former)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.doc = support.new_document("Repeated")
+        points = sampled_shapes.rounded_cube(EDGE, RADIUS, SPACING, 6)
+        cls.cloud, cls.lines = support.add_extraction(cls.doc, points)
+        cls.tau1 = FeatureLines.searchThreshold(cls.lines, 0, lower=FILLET / 2)
+
+    @classmethod
+    def tearDownClass(cls):
+        support.close_document(cls.doc)
+
+    def test_a_hair_below_or_above_an_accepted_threshold_repeats_it(self):
+        tau1 = self.tau1
+        self.assertTrue(FILLET < tau1 < CORNER, tau1)
+        for candidate in (tau1 * (1 - 1e-9), tau1, tau1 * (1 + 1e-9)):
+            self.assertEqual(FeatureLines.repeatedThreshold(self.lines, 0, candidate, [tau1]),
+                             tau1, candidate)
+
+    def test_the_face_threshold_under_the_corner_threshold_adds_the_fillets(self):
+        tau2 = FeatureLines.searchThreshold(self.lines, 0, upper=self.tau1)
+        self.assertTrue(0 < tau2 < FILLET, tau2)
+        self.assertIsNone(FeatureLines.repeatedThreshold(self.lines, 0, tau2, [self.tau1]))
+        self.assertIsNone(FeatureLines.repeatedThreshold(self.lines, 0, self.tau1, []))
+
+    def test_a_threshold_above_every_corner_point_repeats_the_one_below(self):
+        # Nothing is more curved than the corners: the level above such a candidate is empty.
+        self.assertEqual(FeatureLines.repeatedThreshold(self.lines, 0, 10 * CORNER, [self.tau1]),
+                         self.tau1)

@@ -46,6 +46,17 @@ fail() {
     failures=$((failures + 1))
 }
 
+# expect CODE TEXT ARGS...: featurelines ($bin) ARGS exits CODE with one line on stderr that
+# contains TEXT (the scripts set $bin and $work).
+expect() {
+    local code=$1 text=$2; shift 2
+    "$bin" "$@" > /dev/null 2> "$work/err.txt"
+    local got=$?
+    [ "$got" -eq "$code" ] || fail "featurelines $* exited $got, expected $code"
+    grep -q -- "$text" "$work/err.txt" || fail "featurelines $*: message '$(cat "$work/err.txt")' lacks '$text'"
+    [ "$(wc -l < "$work/err.txt")" -eq 1 ] || fail "featurelines $*: more than one line on stderr"
+}
+
 finish() {
     if [ "$failures" -ne 0 ]; then
         echo "$failures check(s) failed" >&2

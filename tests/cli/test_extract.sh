@@ -39,15 +39,6 @@ grep -q "no feature lines" "$work/sphere.out" || fail "sphere summary: $(cat "$w
 $py -c "import json,sys; assert json.load(open(sys.argv[1]))['lines'] == []" "$work/sphere.json" \
     || fail "sphere JSON has lines"
 
-# expect CODE TEXT ARGS...: the call exits CODE and its one-line message contains TEXT.
-expect() {
-    local code=$1 text=$2; shift 2
-    "$bin" "$@" > /dev/null 2> "$work/err.txt"
-    local got=$?
-    [ "$got" -eq "$code" ] || fail "featurelines $* exited $got, expected $code"
-    grep -q -- "$text" "$work/err.txt" || fail "featurelines $*: message '$(cat "$work/err.txt")' lacks '$text'"
-    [ "$(wc -l < "$work/err.txt")" -eq 1 ] || fail "featurelines $*: more than one line on stderr"
-}
 expect 2 "no output file" extract "$work/cube.xyz"
 expect 2 "no INPUT" extract -o "$work/x.json"
 expect 2 "--thresholds" extract "$work/cube.xyz" -o "$work/x.json" --thresholds 0.1,abc

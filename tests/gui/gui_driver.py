@@ -110,6 +110,15 @@ def analysis_running():
     return run_state() == "running"
 
 
+def choose_in_histogram(value):
+    """What a click in the histogram at curvature `value` does: the widget's valueClicked
+    signal, emitted as the click emits it."""
+    histogram = find(QtWidgets.QWidget, "histogram")
+    log("choose %r in the histogram" % value)
+    check(QtCore.QObject.emit(histogram, QtCore.SIGNAL("valueClicked(double)"), value),
+          "the histogram has no signal valueClicked(double)")
+
+
 def press_dialog_button(which):
     """Presses OK or Cancel of the open task dialog ('ok' or 'cancel'), as a user does."""
     role = {"ok": QtWidgets.QDialogButtonBox.Ok, "cancel": QtWidgets.QDialogButtonBox.Cancel}
@@ -209,7 +218,9 @@ def screenshot(name):
 
 
 def grab_widget(widget, name):
-    """One widget as Qt draws it, at once (a 3D view inside it would stay blank)."""
+    """One widget as Qt draws it, once its layout has settled (a 3D view inside it would stay
+    blank)."""
+    settle()
     path = os.path.join(SCREENSHOTS, name + ".png")
     check(widget.grab().save(path), "cannot save " + path)
     log("screenshot %s" % path)
@@ -228,18 +239,72 @@ def view_image(name, width=1000, height=750):
 # ---- Set-up -------------------------------------------------------------------------------
 
 def prepare_window():
-    """The Feature Lines workbench, no start page, and a combo view wide enough for the task
-    panel."""
+    """The Feature Lines workbench and no start page, in FreeCAD's default layout on a laptop
+    screen: the main window maximized on the 1366 x 768 screen, the combo view (and the task
+    panel in it) at the width FreeCAD gives it by itself."""
     FreeCADGui.activateWorkbench("FeatureLinesWorkbench")
     mw = main_window()
     # The start page (a web view still loading) is no part of the test.
     area = mw.findChild(QtWidgets.QMdiArea)
     if area is not None:
         area.closeAllSubWindows()
+    # The tests' screen is 1366 x 768 (tests/gui/CMakeLists.txt): maximized, the window fills it.
     mw.showMaximized()
+    settle(0.2)
     dock = mw.findChild(QtWidgets.QDockWidget, "Combo View")
-    if dock is not None:
-        mw.resizeDocks([dock], [430], QtCore.Qt.Horizontal)
+    log("main window %d x %d, combo view %d px wide" % (mw.width(), mw.height(),
+                                                        dock.width() if dock else -1))
+
+
+def narrow_combo_view(width=230):
+    """The combo view (and the task panel in it) `width` pixels wide, as a user drags it."""
+    mw = main_window()
+    dock = mw.findChild(QtWidgets.QDockWidget, "Combo View")
+    check(dock is not None, "no Combo View dock")
+    mw.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
+    settle(0.5)
+    log("combo view %d px wide" % dock.width())
+
+
+# What a user reads or clicks in the panel: none may stick out of the panel's visible width.
+_PANEL_WIDGETS = (QtWidgets.QAbstractButton, QtWidgets.QComboBox, QtWidgets.QAbstractSpinBox,
+                  QtWidgets.QProgressBar, QtWidgets.QLabel)
+
+
+def check_panel_fits(what):
+    """Every visible button, box, label, progress bar and the histogram of the open task panel
+    lies whole within the task view's visible width, a button or box at least as wide as its
+    text needs, and the histogram at least 150 pixels wide (its ticks and labels readable).
+    `what` names the moment in the messages."""
+    viewport = thresholds_panel()
+    while viewport is not None and viewport.objectName() != "qt_scrollarea_viewport":
+        viewport = viewport.parentWidget()
+    check(viewport is not None, "the task panel is in no scroll area")
+    content = viewport.findChildren(QtWidgets.QWidget)
+    width = viewport.width()
+    checked = 0
+    for w in content:
+        histogram = w.objectName() == "histogram"
+        if not (histogram or isinstance(w, _PANEL_WIDGETS)) or not w.isVisible():
+            continue
+        if isinstance(w, QtWidgets.QLabel) and not w.text():
+            continue
+        if w.objectName().startswith("qt_"):
+            continue  # the parts of a spin box or scroll bar
+        left = w.mapTo(viewport, QtCore.QPoint(0, 0)).x()
+        name = w.objectName() or type(w).__name__
+        check(left >= 0 and left + w.width() <= width,
+              "%s: %s spans x %d..%d of a %d px wide panel" % (what, name, left,
+                                                               left + w.width(), width))
+        if isinstance(w, (QtWidgets.QAbstractButton, QtWidgets.QComboBox)):
+            check(w.width() >= w.minimumSizeHint().width(),
+                  "%s: %s is %d px wide, its text needs %d" % (what, name, w.width(),
+                                                               w.minimumSizeHint().width()))
+        if histogram:
+            check(w.width() >= 150, "%s: the histogram is only %d px wide" % (what, w.width()))
+        checked += 1
+    check(checked >= 5, "%s: only %d widgets of the panel are visible" % (what, checked))
+    log("%s: %d widgets within the %d px panel" % (what, checked, width))
 
 
 def add_cloud(doc, points, name="Cloud"):

@@ -58,9 +58,14 @@ def running():
     g.check(not g.thresholds_panel().isEnabled(), "no thresholds before the analysis")
     bar = g.find(QtWidgets.QProgressBar, "progressBar")
     g.check(bar.isVisible(), "the progress bar shows")
+    status = g.label("labelStatus")
+    # (The observer holds the worker in its first report, before the panel hears of it.)
+    g.check(status.startswith("Analysing"), "the status line says what runs: %s" % status)
+    g.check("neighbours" not in bar.text(), "the bar shows the share only: %s" % bar.text())
+    g.grab_widget(g.find(QtWidgets.QWidget, "TaskExtractionOptions"), "cancel_running_panel")
+    g.check_panel_fits("analysis running")
     g.click("buttonCancelRun")
     state["pressed"].set()
-    g.grab_widget(g.find(QtWidgets.QWidget, "TaskExtractionOptions"), "cancel_running_panel")
 
 
 def cancelled():

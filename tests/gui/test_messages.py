@@ -138,7 +138,7 @@ def dense_noisy_cube():
 
 def coarser_scale_named():
     status = g.label("labelStatus")
-    g.check("1 smooth region" in status, status)
+    g.check("1 part(s) between sharp edges (smooth regions)" in status, status)
     g.check("coarser scale" in status and "region 0 at" in status,
             "the status names the region taken at a coarser scale: %s" % status)
     g.screenshot("message_coarser_scale")

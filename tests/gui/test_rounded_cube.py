@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Fig. 7 of Demarsin et al. (2008) in the GUI alone: a rounded cube's cloud selected, Extract
-feature lines run, the candidate moved with Higher and Lower, the corner threshold accepted (8
-closed corner loops), a lower threshold added and accepted (6 face loops more), Done; then undo
+feature lines run, the candidate moved with Higher and Lower (Lower after Higher is the first
+candidate again), the corner threshold accepted (8 closed corner loops), a threshold a hair below
+it refused (it repeats those lines), a lower threshold added and accepted (6 face loops more),
+Done; then undo
 and redo, and the macro recorded meanwhile replayed. The document is checked after every step
 against the shape: flat faces (curvature 0), fillets (1/(2r)), corners (1/r)."""
 
@@ -53,6 +55,7 @@ def first_candidate():
     g.check("low" in g.label("labelLegend"), "the label colours are explained")
     g.check(not g.button("buttonBack").isVisible(), "nothing accepted yet to go back to")
     g.check(not state["cloud"].ViewObject.isVisible(), "the preview replaces the cloud's view")
+    g.check_panel_fits("stage (a), both boxes open")
     state["first"] = c
 
 
@@ -65,20 +68,36 @@ def higher():
 
 
 def lower():
+    from PySide2 import QtWidgets
+
+    # Lower and Higher step through the candidates as a history: Lower after Higher comes back
+    # to the first candidate, Higher again to the corner one.
     g.click("buttonLower")
     c = g.candidate()
-    g.check(c < state["tau1"], "Lower moves the candidate down (%g < %g)" % (c, state["tau1"]))
-    g.check(0 < c < FILLET, "candidate %g between faces and fillets" % c)
+    g.check(c == state["first"], "Lower comes back to the first candidate: %r, first %r"
+            % (c, state["first"]))
     g.click("buttonHigher")
     c = g.candidate()
-    g.check(FILLET < c < CORNER, "Higher from there finds the corner valley again: %g" % c)
-    state["tau1"] = c
+    g.check(c == state["tau1"], "Higher from there finds the corner candidate again: %r, was %r"
+            % (c, state["tau1"]))
+    g.check(FILLET < c < CORNER, "candidate %g between fillets and corners" % c)
     g.check("inner" in g.label("labelStage"), "the stage text counts the labels")
-    # The thresholds box whole on a 900-pixel screen: the analysis box folded, as a user
+    # The thresholds box whole on a 768-pixel screen: the analysis box folded, as a user
     # folds it once the cloud is analysed.
     g.fold_task_box("TaskExtractionOptions")
     g.settle(1.5)  # the box folds in an animation
+    g.check_panel_fits("stage (a), the analysis box folded")
     g.screenshot("rounded_cube_labels")
+    # The one-screen help: plain words, the paper's terms in parentheses, within the panel.
+    g.click("buttonHelp")
+    g.check(g.find(QtWidgets.QLabel, "labelHelp").isVisible(), "the help shows")
+    text = g.label("labelHelp")
+    for words in ("mean curvature", "(candidate threshold", "(inner)", "(border)", "Accept"):
+        g.check(words in text, "the help explains %s" % words)
+    g.check_panel_fits("the help open")
+    g.screenshot("rounded_cube_help")
+    g.click("buttonHelp")
+    g.check(not g.find(QtWidgets.QLabel, "labelHelp").isVisible(), "a second click hides it")
 
 
 def corner_of(point):
@@ -103,6 +122,28 @@ def accept_corner_threshold():
     g.check(g.stage() == "b", "stage (b) after Accept")
     g.check(g.button("buttonDone").isVisible(), "Done is offered")
     g.check("8 smooth line(s), 8 closed" in g.label("labelStage"), g.label("labelStage"))
+    g.check_panel_fits("stage (b)")
+    # Narrower still, as the paper-width panel of FreeCAD's smaller layouts: 230 pixels.
+    g.narrow_combo_view(230)
+    g.check_panel_fits("stage (b), 230 px")
+    g.screenshot("rounded_cube_stage_b_230px")
+
+
+def refuse_repeated_threshold():
+    # A threshold a hair below the accepted one gives the same patches: its lines would repeat
+    # the 8 corner loops. The panel refuses to accept it and says why.
+    lines = state["lines"]
+    tau1 = state["tau1"]
+    g.choose_in_histogram(tau1 * (1 - 1e-9))
+    g.check(g.stage() == "a" and g.candidate() == tau1 * (1 - 1e-9), "the clicked candidate")
+    g.click("buttonAccept")
+    message = g.label("labelMessage")
+    g.check("same patches" in message, "the panel says why: %s" % message)
+    g.check(g.stage() == "a", "not accepted")
+    g.check(list(lines.Thresholds) == [tau1], "Thresholds unchanged: %s" % list(lines.Thresholds))
+    g.check(lines.SmoothLineCount == 8, "no repeated lines: %d" % lines.SmoothLineCount)
+    g.click("buttonBack")
+    g.check(g.stage() == "b", "Back to the accepted lines")
 
 
 def add_lower():
@@ -206,6 +247,7 @@ def build(steps):
     steps.then("Higher", higher)
     steps.then("Lower, then Higher again", lower)
     steps.then("Accept the corner threshold", accept_corner_threshold)
+    steps.then("a threshold repeating the accepted one is refused", refuse_repeated_threshold)
     steps.then("Add a lower threshold", add_lower)
     steps.then("Accept the face threshold", accept_face_threshold)
     steps.then("Done", done)
