@@ -281,6 +281,9 @@ TEST(HostileText, Utf16IsNamed)
                                                    "1",
                                                    4)),
                    "is UTF-16 text");
+    // Without a byte order mark: the first token, its NUL bytes written out.
+    EXPECT_MESSAGE(parseError("u.xyz", std::string("1\0 \0002\0", 6)),
+                   "u.xyz, line 1: '1\\x00' is not a number");
 }
 
 TEST(HostileCoordinates, WhatTheGridCannotResolveIsRefused)
