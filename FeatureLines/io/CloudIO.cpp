@@ -14,49 +14,18 @@
 #include <string_view>
 #include <vector>
 
+#include "FeatureLines/io/CloudFormats.h"
 #include "FeatureLines/support/HugePages.h"
 
 namespace featurelines {
-
-namespace detail {
-/// Reads a .ply (ply == true) or .pcd file through PCL (CloudIOPcl.cpp, the only file that
-/// sees PCL's headers). The file exists and is a regular file.
-PointMatrix readPclCloud(const std::string& path, bool ply);
-} // namespace detail
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string lowercaseExtension(const std::string& path)
-{
-    std::string extension = fs::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-
 bool isSeparator(char c)
 {
     return c == ' ' || c == '\t' || c == ',';
-}
-
-/// One token for a message: at most 20 bytes, those outside printable ASCII written as \xNN,
-/// so a binary file gives a readable line and sends no escape sequence to the terminal.
-std::string quoted(std::string_view token)
-{
-    std::string out = "'";
-    for (const char c : token.substr(0, 20)) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7F && byte != '\\') {
-            out += c;
-        } else {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
-            out += escaped;
-        }
-    }
-    return out + (token.size() > 20 ? "...'" : "'");
 }
 
 /// True for a row such as "1,5 2,25 3,125": numbers separated by white space with a comma
@@ -119,17 +88,17 @@ const char* readCoordinate(const char* p, const char* lineEnd, int coordinate,
     double value = 0.0;
     const auto [parsedEnd, error] = std::from_chars(start, tokenEnd, value);
     if (error == std::errc::result_out_of_range) {
-        throw std::invalid_argument(where + quoted(token) + " is out of range");
+        throw std::invalid_argument(where + detail::quoted(token) + " is out of range");
     }
     if (error != std::errc() || parsedEnd != tokenEnd) {
-        throw std::invalid_argument(where + quoted(token) + " is not a number");
+        throw std::invalid_argument(where + detail::quoted(token) + " is not a number");
     }
     if (!std::isfinite(value)) {
-        throw std::invalid_argument(where + "coordinate " + quoted(token) +
+        throw std::invalid_argument(where + "coordinate " + detail::quoted(token) +
                                     " is not a finite number");
     }
     if (std::abs(value) > FLT_MAX) {
-        throw std::invalid_argument(where + "coordinate " + quoted(token) +
+        throw std::invalid_argument(where + "coordinate " + detail::quoted(token) +
                                     " is beyond the float range (3.4e38)");
     }
     xyz.push_back(value);
@@ -139,15 +108,17 @@ const char* readCoordinate(const char* p, const char* lineEnd, int coordinate,
 /// The text formats: one point per line, the first three numbers of a line are x y z.
 /// std::from_chars is exact, fast and does not follow the process locale (FreeCAD's GUI
 /// may run under one whose decimal separator is a comma).
-PointMatrix readText(const std::string& path)
+PointMatrix readText(std::string_view text, const std::string& path)
 {
-    const std::string text = fileText(path);
+    if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF") {
+        throw std::invalid_argument(path + ": is UTF-16 text; save it as UTF-8 or ASCII");
+    }
     std::vector<double> xyz;
     xyz.reserve(text.size() / 16);
     adviseHugePages(xyz.data(), xyz.capacity() * sizeof(double));
     const char* cursor = text.data();
     const char* const end = text.data() + text.size();
-    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) { // UTF-8 byte order mark
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") { // UTF-8 byte order mark
         cursor += 3;
     }
     long lineNumber = 0;
@@ -188,6 +159,11 @@ PointMatrix readText(const std::string& path)
 
 } // namespace
 
+PointMatrix detail::parseTextCloud(std::string_view bytes, const std::string& name)
+{
+    return readText(bytes, name);
+}
+
 PointMatrix readCloud(const std::string& path)
 {
     std::error_code error;
@@ -204,21 +180,7 @@ PointMatrix readCloud(const std::string& path)
         throw std::invalid_argument(path + ": is not a regular file (a pipe, socket or device); "
                                            "save the cloud to a file first");
     }
-    const std::string extension = lowercaseExtension(path);
-    PointMatrix P;
-    if (extension == ".xyz" || extension == ".txt" || extension == ".asc" || extension == ".csv") {
-        P = readText(path);
-    } else if (extension == ".ply" || extension == ".pcd") {
-        P = detail::readPclCloud(path, extension == ".ply");
-    } else {
-        throw std::invalid_argument(
-            path + ": unknown point cloud format " +
-            (extension.empty() ? std::string("(no extension)") : "'" + extension + "'") +
-            "; known: .xyz .txt .asc .csv .ply .pcd");
-    }
-    checkFinite(P, path);
-    checkFloatRange(P, path);
-    return P;
+    return detail::parseCloud(fileText(path), path);
 }
 
 void writeXyz(const std::string& path, const PointMatrix& P)

@@ -2,20 +2,52 @@
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 
 #include <algorithm>
+#include <charconv>
+#include <stdexcept>
+#include <string>
 
 #include <omp.h>
 
+#include "FeatureLines/io/CloudIO.h"
 #include "FeatureLines/support/HugePages.h"
 
 namespace featurelines {
+
+namespace {
+
+/// A number for a message: shortest form that reads back the same ("1e-310", "1000000000000010").
+std::string formatNumber(double value)
+{
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+} // namespace
 
 MortonGrid::MortonGrid(const PointMatrix& P)
 {
     if (P.rows() == 0) {
         return;
     }
+    checkFinite(P, "point cloud");
+    checkFloatRange(P, "point cloud");
     low = P.colwise().minCoeff();
-    const double extent = (P.colwise().maxCoeff() - low).maxCoeff();
+    const Eigen::RowVector3d high = P.colwise().maxCoeff();
+    const double extent = (high - low).maxCoeff();
+    if (extent > 0.0 && extent < minimumCloudSize) {
+        throw std::invalid_argument("point cloud: its size (the largest side of its bounding box) "
+                                    "is " +
+                                    formatNumber(extent) +
+                                    ", below the smallest supported, 1e-100: scale it up");
+    }
+    const double farthest = std::max(low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff());
+    if (extent > 0.0 && farthest > maximumOffsetInSizes * extent) {
+        throw std::invalid_argument(
+            "point cloud: its coordinates reach " + formatNumber(farthest) +
+            ", more than 1e8 times its size (" + formatNumber(extent) +
+            "): too far from the origin for double precision; move it nearer the origin");
+    }
     scale = extent > 0.0 ? double((1 << mortonBitsPerAxis) - 1) / extent : 0.0;
 }
 

@@ -34,6 +34,13 @@ inline std::uint64_t mortonKey(std::uint64_t x, std::uint64_t y, std::uint64_t z
     return spreadBits(x) | spreadBits(y) << 1 | spreadBits(z) << 2;
 }
 
+/// The smallest size (largest side of the bounding box) of a cloud that is not one point:
+/// squared distances of its neighbours stay far above the smallest double (2.2e-308).
+constexpr double minimumCloudSize = 1e-100;
+/// The farthest a cloud may lie from the origin, in multiples of its size: at 1e8 sizes a
+/// double still resolves 1e-8 of the size, far below any point spacing of a scan.
+constexpr double maximumOffsetInSizes = 1e8;
+
 /// The quantisation of a cloud's keys: its bounding box from `low`, its largest side in
 /// 2^21 - 1 steps (`scale` steps per length unit; 0 when every point coincides).
 struct MortonGrid
@@ -41,6 +48,10 @@ struct MortonGrid
     Eigen::RowVector3d low = Eigen::RowVector3d::Zero();
     double scale = 0.0;
 
+    /// Throws std::invalid_argument, naming the problem, for a cloud whose coordinates the
+    /// keys and the fits cannot resolve: a NaN or infinite coordinate, one beyond the float
+    /// range (3.4e38), a size below minimumCloudSize, or coordinates farther from the origin
+    /// than maximumOffsetInSizes times the size. Every stage's grid is built here.
     explicit MortonGrid(const PointMatrix& P);
     /// Position along an axis in steps (not rounded).
     double steps(double coordinate, int axis) const { return (coordinate - low[axis]) * scale; }

@@ -12,9 +12,9 @@
 #include <omp.h>
 
 #include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/support/HugePages.h"
 #include "FeatureLines/support/IdleThreads.h"
-#include "FeatureLines/neighbourhoods/MortonOrder.h"
 
 namespace featurelines {
 
@@ -169,6 +169,30 @@ void checkNeighbourInput(const PointMatrix& P, int k)
                                     "holds");
     }
     checkFinite(P, "point cloud");
+}
+
+/// The most distinct points one key (a cell 1 / (2^21 - 1) of the cloud's size wide) may hold.
+/// A surface sampled finer than that is no scan: such a cell comes from a few points far out
+/// that stretch the bounding box, and would make the search compare every pair in it.
+constexpr Eigen::Index maximumPointsPerKey = 1024;
+
+/// Throws when more than maximumPointsPerKey points other than the first of a run of one key
+/// differ from it: the Morton order cannot separate them.
+void checkKeyResolution(const std::vector<std::uint64_t>& keys, const PointMatrix& Q)
+{
+    Eigen::Index runStart = 0, differing = 0;
+    for (Eigen::Index j = 1; j < Q.rows(); ++j) {
+        if (keys[static_cast<std::size_t>(j)] != keys[static_cast<std::size_t>(runStart)]) {
+            runStart = j;
+            differing = 0;
+        } else if (Q.row(j) != Q.row(runStart) && ++differing > maximumPointsPerKey) {
+            throw std::invalid_argument(
+                "point cloud: more than " + std::to_string(maximumPointsPerKey) +
+                " points lie in one cell of 1/2097151 of its size: its size is too large "
+                "for its point spacing (points far out?); "
+                "remove the outlying points or split the cloud");
+        }
+    }
 }
 
 /// Every point coincides: the neighbours of each are the others of lowest index.
@@ -609,6 +633,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     }
     const KeyOrder order = keyOrder(P, grid, threads);
     releaseIdleThreads(); // the level and the cells' hash table are serial
+    checkKeyResolution(order.keys, order.points(P));
     const int level = searchLevel(order.keys, n, k);
     const Cells cells(order.keys, level);
     const CellSearchInput in{grid, order.points(P), order, cells, level, k};

@@ -124,6 +124,42 @@ expect 1 "the points lie on a line" "$work/line.xyz" curvature "$work/line.xyz" 
 expect 1 "the points lie on a line" "$work/line.xyz" threshold "$work/line.xyz"
 [ -e "$work/duplicates.H" ] || [ -e "$work/line.H" ] && fail "a refused curvature wrote a file"
 
+# ---- hostile input (issue 22): refused at once with one line, never a hang or a crash ----
+awk '{ printf "%se-310 %se-310 %se-310\n", $1, $2, $3 }' "$cloud" > "$work/denormal.xyz"
+for command in info curvature threshold; do
+    expect 1 "below the smallest supported, 1e-100" "$work/denormal.xyz" \
+        $command "$work/denormal.xyz" $([ $command = curvature ] && echo "-o $work/d.H")
+done
+awk '{ printf "%.17g %.17g %.17g\n", $1 + 1e15, $2 + 1e15, $3 + 1e15 }' "$cloud" > "$work/far.xyz"
+for command in info curvature threshold; do
+    expect 1 "more than 1e8 times its size" "$work/far.xyz" \
+        $command "$work/far.xyz" $([ $command = curvature ] && echo "-o $work/f.H")
+done
+{ cat "$cloud"; echo "1e8 0 0"; } > "$work/outlier.xyz"
+expect 1 "more than 1024 points lie in one cell" "$work/outlier.xyz" info "$work/outlier.xyz"
+expect 1 "more than 1024 points lie in one cell" "$work/outlier.xyz" \
+    extract "$work/outlier.xyz" -o "$work/o.json"
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4294967296\n' > "$work/claims.ply"
+printf 'property float x\nproperty float y\nproperty float z\nend_header\n' >> "$work/claims.ply"
+head -c 120 /dev/zero >> "$work/claims.ply"
+expect 1 "the header says 'element vertex 4294967296', the file ends in row 11" \
+    "$work/claims.ply" info "$work/claims.ply"
+{
+    printf 'VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 4000000000\n'
+    printf 'WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA binary\n'
+    head -c 12 /dev/zero
+} > "$work/count.pcd"
+expect 1 "field 'z' has COUNT '4000000000'" "$work/count.pcd" extract "$work/count.pcd" \
+    -o "$work/c.json"
+{ ply 50 | sed 's/^format ascii 1.0$/format ascii 1.0\nobj_info scanner 1/'; head -n 50 "$cloud"; } \
+    > "$work/info.ply"
+"$bin" info "$work/info.ply" | grep -qx "points: 50" || fail "a PLY with obj_info is not read"
+head -c 3000 "$bin" > "$work/junk.xyz"
+expect 1 "$work/junk.xyz, line 1: '\x7FELF" "$work/junk.xyz" info "$work/junk.xyz"
+printf '\377\3761\000 \0002\000 \0003\000\n\000' > "$work/utf16.xyz"
+expect 1 "$work/utf16.xyz: is UTF-16 text" "$work/utf16.xyz" extract "$work/utf16.xyz" \
+    -o "$work/u.json"
+
 # ---- options ----
 expect 2 "--k must be at least 3 and at most 256, got 10000" "$cloud" \
     curvature "$cloud" -o "$work/k.H" --k 10000
