@@ -172,16 +172,13 @@ bool CmdFeatureLinesMakePatchClouds::isActive()
     return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
 }
 
-// ---- Colouring the cloud -----------------------------------------------------------------
-
-/// Colour the selected feature lines' cloud by one of its per-point outputs (the view's
-/// ColourPoints), or back to the plain cloud.
-class CmdFeatureLinesColourPoints : public Gui::Command
+/// A command on the one FeatureLines object selected, named and described by its arguments;
+/// apply() does its work.
+class CmdFeatureLinesOnLines : public Gui::Command
 {
 public:
-    CmdFeatureLinesColourPoints(const char* name, const char* mode, const char* menuText,
-                                const char* toolTip)
-        : Command(name), mode(mode)
+    CmdFeatureLinesOnLines(const char* name, const char* menuText, const char* toolTip)
+        : Command(name)
     {
         sAppModule = "FeatureLines";
         sGroup = QT_TR_NOOP("FeatureLines");
@@ -190,22 +187,41 @@ public:
         sWhatsThis = name;
         sStatusTip = toolTip;
     }
-    const char* className() const override { return "CmdFeatureLinesColourPoints"; }
 
 protected:
+    virtual void apply(App::DocumentObject* lines) = 0;
     void activated(int) override
     {
-        App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText));
-        if (!lines) {
-            return;
+        if (App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText))) {
+            apply(lines);
         }
-        // A view property: a macro line, kept with the document's view; "Plain cloud" removes it.
-        doCommand(Gui, "Gui.getDocument('%s').getObject('%s').ColourPoints = '%s'",
-                  lines->getDocument()->getName(), lines->getNameInDocument(), mode);
     }
     bool isActive() override
     {
         return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+    }
+};
+
+// ---- Colouring the cloud -----------------------------------------------------------------
+
+/// Colour the selected feature lines' cloud by one of its per-point outputs (the view's
+/// ColourPoints), or back to the plain cloud.
+class CmdFeatureLinesColourPoints : public CmdFeatureLinesOnLines
+{
+public:
+    CmdFeatureLinesColourPoints(const char* name, const char* mode, const char* menuText,
+                                const char* toolTip)
+        : CmdFeatureLinesOnLines(name, menuText, toolTip), mode(mode)
+    {
+    }
+    const char* className() const override { return "CmdFeatureLinesColourPoints"; }
+
+protected:
+    void apply(App::DocumentObject* lines) override
+    {
+        // A view property: a macro line, kept with the document's view; "Plain cloud" removes it.
+        doCommand(Gui, "Gui.getDocument('%s').getObject('%s').ColourPoints = '%s'",
+                  lines->getDocument()->getName(), lines->getNameInDocument(), mode);
     }
 
 private:
@@ -375,33 +391,20 @@ bool CmdFeatureLinesDeleteLines::isActive()
 }
 
 /// A cleaning of the selected feature lines with fixed arguments of cleanLines.
-class CmdFeatureLinesCleanLines : public Gui::Command
+class CmdFeatureLinesCleanLines : public CmdFeatureLinesOnLines
 {
 public:
     CmdFeatureLinesCleanLines(const char* name, const char* arguments, const char* menuText,
                               const char* toolTip)
-        : Command(name), arguments(arguments)
+        : CmdFeatureLinesOnLines(name, menuText, toolTip), arguments(arguments)
     {
-        sAppModule = "FeatureLines";
-        sGroup = QT_TR_NOOP("FeatureLines");
-        sMenuText = menuText;
-        sToolTipText = toolTip;
-        sWhatsThis = name;
-        sStatusTip = toolTip;
     }
     const char* className() const override { return "CmdFeatureLinesCleanLines"; }
 
 protected:
-    void activated(int) override
+    void apply(App::DocumentObject* lines) override
     {
-        App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText));
-        if (lines) {
-            runCleanLines(*this, lines, sMenuText, arguments);
-        }
-    }
-    bool isActive() override
-    {
-        return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+        runCleanLines(*this, lines, sMenuText, arguments);
     }
 
 private:
