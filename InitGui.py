@@ -31,8 +31,11 @@ class FeatureLinesWorkbench(FreeCADGui.Workbench):
         colouring = ["FeatureLines_ColourByRegion", "FeatureLines_ColourByPatch",
                      "FeatureLines_ColourByLabel", "FeatureLines_ColourByCurvature",
                      "FeatureLines_ColourNothing"]
-        self.appendToolbar("Feature Lines", commands)
-        self.appendMenu("&Feature Lines", commands + ["Separator"] + colouring)
+        cleaning = ["FeatureLines_DropShortLines", "FeatureLines_DeleteLines",
+                    "FeatureLines_MergeLines", "FeatureLines_RestoreLines"]
+        self.appendToolbar("Feature Lines", commands + cleaning)
+        self.appendMenu("&Feature Lines",
+                        commands + ["Separator"] + cleaning + ["Separator"] + colouring)
 
     def Activated(self):
         pass

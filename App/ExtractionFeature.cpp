@@ -214,6 +214,14 @@ Extraction::Extraction()
     _ADD_PROPERTY_TYPE(thresholdsName, Thresholds, (), "Thresholds", App::Prop_None, thresholdsDoc);
     _ADD_PROPERTY_TYPE(regionThresholdsName, RegionThresholds, (), "Thresholds", App::Prop_None,
                        regionThresholdsDoc);
+    ADD_PROPERTY_TYPE(MinLineLength, (0.0), "Cleaning", App::Prop_None,
+                      "Lines shorter than this are dropped (after merging); 0 keeps every line.");
+    ADD_PROPERTY_TYPE(RemovedLines, (), "Cleaning", App::Prop_None,
+                      "The lines deleted by the user: their ids (see LineIds), which name the "
+                      "same lines as long as the cloud and the parameters do not change.");
+    ADD_PROPERTY_TYPE(MergeEndToEnd, (false), "Cleaning", App::Prop_None,
+                      "Two lines of one kind whose ends meet at a point where no other line "
+                      "ends become one line.");
 
     ADD_PROPERTY_TYPE(SharpWires, (TopoDS_Shape()), "Output", outputType,
                       "The sharp edges: a compound of wires.");
@@ -231,6 +239,9 @@ Extraction::Extraction()
                       "Per wire of SmoothWires: its smooth region.");
     ADD_PROPERTY_TYPE(SmoothLineThresholds, (), "Output", outputType,
                       "Per wire of SmoothWires: the curvature threshold it borders.");
+    ADD_PROPERTY_TYPE(LineIds, (), "Output", perPointType,
+                      "Per wire of Shape: the ids of the extraction's lines it is made of "
+                      "('3', or '3 7' for merged lines), the ids RemovedLines holds.");
     ADD_PROPERTY_TYPE(Junctions, (), "Output", outputType,
                       "Points where three or more lines meet.");
     ADD_PROPERTY_TYPE(Spacing, (0.0), "Output", outputType,
@@ -339,17 +350,28 @@ App::DocumentObjectExecReturn* Extraction::execute()
         const Points::PointKernel& kernel = cloud.Points.getValue();
         checkPoints(kernel, labelOf(&cloud), options);
         const ExtractionResult result = extractLines(kernel, labelOf(&cloud), options);
-        setOutputs(toOutputs(result, kernel.getTransform()));
+        setOutputs(toOutputs(result, kernel.getTransform(), lineCleaning()));
     } catch (const ExecError& e) {
         return new App::DocumentObjectExecReturn(e.message);
     }
     return App::DocumentObject::StdReturn;
 }
 
+LineCleaning Extraction::lineCleaning() const
+{
+    LineCleaning cleaning;
+    cleaning.minLength = MinLineLength.getValue();
+    const std::vector<long>& removed = RemovedLines.getValues();
+    cleaning.removed.assign(removed.begin(), removed.end());
+    cleaning.mergeEndToEnd = MergeEndToEnd.getValue();
+    return cleaning;
+}
+
 void Extraction::setOutputs(const ExtractionOutputs& out)
 {
     const LineWires& w = out.wires;
     Shape.setValue(makeCompoundOfAll(w));
+    LineIds.setValues(wireLineIds(w));
 
     const Base::Matrix4D placement = Placement.getValue().toMatrix();
     auto placed = [&](const std::vector<TopoDS_Wire>& wires) {

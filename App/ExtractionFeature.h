@@ -65,6 +65,13 @@ public:
     App::PropertyFloatList Thresholds;
     App::PropertyMap RegionThresholds;
 
+    /// Cleaning of the lines, applied when the wires are built (LineCleaning): lines shorter
+    /// than MinLineLength dropped, the lines RemovedLines names left out, lines meeting end to
+    /// end merged when MergeEndToEnd is on. FeatureLines.cleanLines() sets them.
+    App::PropertyLength MinLineLength;
+    App::PropertyIntegerList RemovedLines;
+    App::PropertyBool MergeEndToEnd;
+
     // Output: the lines by type (Shape holds them all: sharp, then smooth, then boundary).
     Part::PropertyPartShape SharpWires;
     Part::PropertyPartShape SmoothWires;
@@ -76,6 +83,9 @@ public:
     /// Per wire of SmoothWires: its region and threshold.
     App::PropertyIntegerList SmoothLineRegions;
     App::PropertyFloatList SmoothLineThresholds;
+    /// Per wire of Shape: the ids of the extraction's lines it is made of ("3", or "3 7" for
+    /// merged lines), the ids RemovedLines holds.
+    App::PropertyStringList LineIds;
     App::PropertyVectorList Junctions;
     App::PropertyLength Spacing;
     App::PropertyInteger RegionCount;
@@ -114,6 +124,8 @@ protected:
 private:
     void initParameter(App::Property& property, const char* name);
     void setOutputs(const ExtractionOutputs& outputs);
+    /// The cleaning the properties ask for.
+    LineCleaning lineCleaning() const;
 
     /// Set by onDocumentRestored when the stored result is damaged, cleared by execute().
     bool damagedOnRestore = false;

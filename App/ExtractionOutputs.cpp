@@ -12,6 +12,8 @@
 #include <Mod/Points/App/Points.h>
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 namespace FeatureLines {
 
@@ -44,21 +46,108 @@ std::vector<gp_Pnt> wireVertices(const featurelines::FeatureLine& line,
     return vertices;
 }
 
-void addWire(LineWires& out, const featurelines::FeatureLine& line, const TopoDS_Wire& wire)
+void addWire(LineWires& out, const CleanedLine& cleaned, const TopoDS_Wire& wire)
 {
+    const featurelines::FeatureLine& line = cleaned.line;
     switch (line.type) {
     case LineType::Sharp:
         out.sharp.push_back(wire);
+        out.sharpIds.push_back(cleaned.ids);
         break;
     case LineType::Smooth:
         out.smooth.push_back(wire);
+        out.smoothIds.push_back(cleaned.ids);
         out.smoothRegion.push_back(line.region);
         out.smoothThreshold.push_back(line.threshold);
         break;
     case LineType::Boundary:
         out.boundary.push_back(wire);
+        out.boundaryIds.push_back(cleaned.ids);
         break;
     }
+}
+
+/// The line's length in world coordinates (a closed line's closing segment included).
+double worldLength(const featurelines::FeatureLine& line, const Base::Matrix4D& toWorld)
+{
+    double length = 0.0;
+    const Eigen::Index n = line.points.rows();
+    for (Eigen::Index i = 1; i < n; ++i) {
+        length += Base::Distance(worldPoint(toWorld, line.points, i - 1),
+                                 worldPoint(toWorld, line.points, i));
+    }
+    if (line.closed && n > 2) {
+        length += Base::Distance(worldPoint(toWorld, line.points, n - 1),
+                                 worldPoint(toWorld, line.points, 0));
+    }
+    return length;
+}
+
+/// The line run the other way.
+void reverse(CleanedLine& c)
+{
+    c.line.points = c.line.points.colwise().reverse().eval();
+    std::swap(c.line.startJunction, c.line.endJunction);
+}
+
+bool mergeable(const featurelines::FeatureLine& a, const featurelines::FeatureLine& b)
+{
+    return a.type == b.type && a.region == b.region &&
+           (a.type != LineType::Smooth || a.threshold == b.threshold);
+}
+
+/// `b` appended to `a`, both open and meeting at junction `j` (a's end, b's start after turning
+/// them): a line from a's start to b's end, closed when those are one junction.
+CleanedLine joined(CleanedLine a, CleanedLine b, int j)
+{
+    if (a.line.endJunction != j) {
+        reverse(a);
+    }
+    if (b.line.startJunction != j) {
+        reverse(b);
+    }
+    const Eigen::Index na = a.line.points.rows(), nb = b.line.points.rows();
+    PointMatrix points(na + nb - 1, 3);
+    points.topRows(na) = a.line.points;
+    points.bottomRows(nb - 1) = b.line.points.bottomRows(nb - 1); // b's first is the junction
+    CleanedLine out = a;
+    out.line.points = points;
+    out.line.endJunction = b.line.endJunction;
+    out.ids.insert(out.ids.end(), b.ids.begin(), b.ids.end());
+    std::sort(out.ids.begin(), out.ids.end());
+    if (out.line.startJunction >= 0 && out.line.startJunction == out.line.endJunction) {
+        out.line.closed = true; // both ends on one junction: a loop (last vertex dropped)
+        out.line.points.conservativeResize(out.line.points.rows() - 1, 3);
+        out.line.startJunction = out.line.endJunction = -1;
+    }
+    return out;
+}
+
+/// One merge of two lines meeting end to end at a junction no other line ends on; false when
+/// there is none.
+bool mergeOnce(std::vector<CleanedLine>& lines)
+{
+    std::map<int, std::vector<size_t>> ends; // junction -> the lines ending there, once per end
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const featurelines::FeatureLine& l = lines[i].line;
+        if (l.closed || l.points.rows() < 2) {
+            continue;
+        }
+        for (int j : {l.startJunction, l.endJunction}) {
+            if (j >= 0) {
+                ends[j].push_back(i);
+            }
+        }
+    }
+    for (const auto& [j, at] : ends) {
+        if (at.size() != 2 || at[0] == at[1] || !mergeable(lines[at[0]].line, lines[at[1]].line)) {
+            continue;
+        }
+        lines[at[0]] = joined(lines[at[0]], lines[at[1]], j);
+        lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(at[1]));
+        return true;
+    }
+    return false;
 }
 
 std::vector<Base::Vector3d> worldJunctions(const ExtractionResult& r, const Base::Matrix4D& toWorld)
@@ -123,10 +212,50 @@ int labelValue(featurelines::PointLabel label)
     return label == featurelines::PointLabel::Outside ? -1 : int(label);
 }
 
-LineWires makeWires(const ExtractionResult& result, const Base::Matrix4D& toWorld)
+std::vector<CleanedLine> cleanLines(const std::vector<featurelines::FeatureLine>& lines,
+                                    const LineCleaning& cleaning, const Base::Matrix4D& toWorld)
+{
+    const std::set<long> removed(cleaning.removed.begin(), cleaning.removed.end());
+    std::vector<CleanedLine> out;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        if (!removed.count(static_cast<long>(i))) {
+            out.push_back({lines[i], {static_cast<long>(i)}});
+        }
+    }
+    if (cleaning.mergeEndToEnd) {
+        while (mergeOnce(out)) {
+        }
+    }
+    if (cleaning.minLength > 0.0) {
+        out.erase(std::remove_if(out.begin(), out.end(),
+                                 [&](const CleanedLine& c) {
+                                     return worldLength(c.line, toWorld) < cleaning.minLength;
+                                 }),
+                  out.end());
+    }
+    return out;
+}
+
+std::vector<std::string> wireLineIds(const LineWires& w)
+{
+    std::vector<std::string> out;
+    for (const auto* ids : {&w.sharpIds, &w.smoothIds, &w.boundaryIds}) {
+        for (const std::vector<long>& wire : *ids) {
+            std::string s;
+            for (long id : wire) {
+                s += (s.empty() ? "" : " ") + std::to_string(id);
+            }
+            out.push_back(s);
+        }
+    }
+    return out;
+}
+
+LineWires makeWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld)
 {
     LineWires out;
-    for (const featurelines::FeatureLine& line : result.lines) {
+    for (const CleanedLine& cleaned : lines) {
+        const featurelines::FeatureLine& line = cleaned.line;
         bool closed = false;
         const std::vector<gp_Pnt> vertices = wireVertices(line, toWorld, closed);
         if (vertices.size() < 2) {
@@ -143,7 +272,7 @@ LineWires makeWires(const ExtractionResult& result, const Base::Matrix4D& toWorl
             continue;
         }
         out.closed += closed ? 1 : 0;
-        addWire(out, line, polygon.Wire());
+        addWire(out, cleaned, polygon.Wire());
     }
     return out;
 }
@@ -167,10 +296,11 @@ TopoDS_Shape makeCompoundOfAll(const LineWires& w)
     return makeCompound(all);
 }
 
-ExtractionOutputs toOutputs(const ExtractionResult& result, const Base::Matrix4D& toWorld)
+ExtractionOutputs toOutputs(const ExtractionResult& result, const Base::Matrix4D& toWorld,
+                            const LineCleaning& cleaning)
 {
     ExtractionOutputs out;
-    out.wires = makeWires(result, toWorld);
+    out.wires = makeWires(cleanLines(result.lines, cleaning, toWorld), toWorld);
     out.junctions = worldJunctions(result, toWorld);
     out.spacing = result.spacing;
     setThresholds(out, result);

@@ -11,6 +11,7 @@
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -44,17 +45,48 @@ std::vector<Int> labelValues(const std::vector<featurelines::PointLabel>& labels
     return values;
 }
 
+/// What the user cleaned of the lines after the extraction (the Extraction's "Cleaning"
+/// properties). A line's id is its place in the core's result (ExtractionResult::lines), the same
+/// for the same cloud and parameters.
+struct LineCleaning
+{
+    /// Lines (after merging) shorter than this, in world units, are dropped; 0 keeps all.
+    double minLength = 0.0;
+    /// Ids of lines removed (before merging).
+    std::vector<long> removed;
+    /// Two lines whose ends sit on one junction where no other remaining line ends become one.
+    bool mergeEndToEnd = false;
+};
+
+/// A line of the result after cleaning, with the ids of the result's lines it is made of.
+struct CleanedLine
+{
+    featurelines::FeatureLine line;
+    std::vector<long> ids;
+};
+
+/// The result's lines cleaned: the removed ones left out, then lines meeting end to end merged
+/// (when asked; a merge of lines of one type, and for smooth lines of one region and threshold),
+/// then the ones shorter than minLength (measured in world coordinates) dropped. Ids out of
+/// range are ignored.
+std::vector<CleanedLine> cleanLines(const std::vector<featurelines::FeatureLine>& lines,
+                                    const LineCleaning& cleaning, const Base::Matrix4D& toWorld);
+
 /// The lines as wires by type, in world coordinates; lines whose vertices all coincide are
 /// skipped.
 struct LineWires
 {
     std::vector<TopoDS_Wire> sharp, smooth, boundary;
+    /// Per wire of each type: the ids of the result's lines it is made of.
+    std::vector<std::vector<long>> sharpIds, smoothIds, boundaryIds;
     /// Per smooth wire: the region and threshold of its line.
     std::vector<long> smoothRegion;
     std::vector<double> smoothThreshold;
     int closed = 0;
 };
-LineWires makeWires(const featurelines::ExtractionResult& result, const Base::Matrix4D& toWorld);
+LineWires makeWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld);
+/// The ids of every wire in the order of makeCompoundOfAll, one "3" or "3 7" string per wire.
+std::vector<std::string> wireLineIds(const LineWires& wires);
 /// A compound of the wires, in order.
 TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires);
 /// A compound of every wire: the sharp ones, then the smooth ones, then the boundary.
@@ -83,8 +115,8 @@ struct ExtractionOutputs
     long patchCount = 0;
 };
 
-/// The result in world coordinates (`toWorld`: the source cloud's placement).
+/// The result in world coordinates (`toWorld`: the source cloud's placement), its lines cleaned.
 ExtractionOutputs toOutputs(const featurelines::ExtractionResult& result,
-                            const Base::Matrix4D& toWorld);
+                            const Base::Matrix4D& toWorld, const LineCleaning& cleaning = {});
 
 } // namespace FeatureLines

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The Python functions of an extraction: extract, makeExtraction, parameters.
+// The Python functions of an extraction: extract, makeExtraction, parameters, cleanLines.
 #include <FCConfig.h>
 
 #include <App/Document.h>
@@ -7,6 +7,12 @@
 #include <Base/VectorPy.h>
 #include <Mod/Part/App/TopoShapeWirePy.h>
 #include <Mod/Points/App/PointsFeature.h>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
 
 #include "ExtractionCache.h"
 #include "ExtractionFeature.h"
@@ -58,6 +64,46 @@ Py::Dict extractionDict(const ExtractionOutputs& o)
     return out;
 }
 
+/// The Extraction object `arg` is, or a TypeError.
+Extraction& extractionArgument(const Py::Object& arg, const char* function)
+{
+    if (PyObject_TypeCheck(arg.ptr(), &App::DocumentObjectPy::Type)) {
+        App::DocumentObject* obj =
+            static_cast<App::DocumentObjectPy*>(arg.ptr())->getDocumentObjectPtr();
+        if (obj && obj->isDerivedFrom(Extraction::getClassTypeId())) {
+            return *static_cast<Extraction*>(obj);
+        }
+    }
+    throw Py::TypeError(std::string(function) +
+                        " needs a FeatureLines::Extraction object (from makeExtraction or the "
+                        "Extract feature lines command)");
+}
+
+/// The line ids of wire `wire` of the extraction's Shape (LineIds), checked.
+std::vector<long> idsOfWire(const Extraction& e, long wire)
+{
+    TopTools_IndexedMapOfShape wires;
+    TopExp::MapShapes(e.Shape.getValue(), TopAbs_WIRE, wires);
+    const std::vector<std::string>& ids = e.LineIds.getValues();
+    if (ids.size() != static_cast<size_t>(wires.Extent())) {
+        throw Py::ValueError("'" + std::string(e.Label.getValue()) + "' has " +
+                             std::to_string(wires.Extent()) + " wires but " +
+                             std::to_string(ids.size()) +
+                             " line ids: recompute it before removing lines");
+    }
+    if (wire < 0 || wire >= wires.Extent()) {
+        throw Py::ValueError("no wire " + std::to_string(wire) + ": '" +
+                             std::string(e.Label.getValue()) + "' has wires 0 to " +
+                             std::to_string(wires.Extent() - 1));
+    }
+    std::istringstream s(ids[static_cast<size_t>(wire)]);
+    std::vector<long> out;
+    for (long id = 0; s >> id;) {
+        out.push_back(id);
+    }
+    return out;
+}
+
 } // namespace
 
 void Module::addExtractionFunctions()
@@ -84,6 +130,17 @@ void Module::addExtractionFunctions()
         "Adds a FeatureLines::Extraction object reading `points_feature` (a Points feature)\n"
         "to its document, with the given parameters (property names). Recompute the\n"
         "document to extract.");
+    add_keyword_method(
+        "cleanLines", &Module::cleanLines,
+        "cleanLines(extraction, minLength=None, remove=None, mergeEndToEnd=None,\n"
+        "           restore=False)\n"
+        "Cleans the lines of a FeatureLines::Extraction through its Cleaning properties,\n"
+        "kept by recomputes: minLength drops lines shorter than it (0 keeps all);\n"
+        "remove=[i, ...] deletes wires i of extraction.Shape.Wires (0-based) by adding\n"
+        "their line ids (LineIds) to RemovedLines; mergeEndToEnd=True joins two lines\n"
+        "whose ends meet where no other line ends. restore=True first brings every\n"
+        "line back (RemovedLines, MinLineLength and MergeEndToEnd cleared). Recompute the\n"
+        "document to see the result.");
     add_varargs_method(
         "parameters", &Module::listParameters,
         "parameters() -> list of dict\n"
@@ -168,6 +225,64 @@ Py::Object Module::listParameters(const Py::Tuple& args)
         list.append(d);
     }
     return list;
+}
+
+} // namespace FeatureLines
+
+namespace FeatureLines {
+
+Py::Object Module::cleanLines(const Py::Tuple& args, const Py::Dict& keywords)
+{
+    if (args.size() != 1) {
+        throw Py::TypeError("cleanLines(extraction, minLength=None, remove=None, "
+                            "mergeEndToEnd=None, restore=False) takes one positional argument");
+    }
+    Extraction& e = extractionArgument(args[0], "cleanLines");
+    const std::set<std::string> known = {"minLength", "remove", "mergeEndToEnd", "restore"};
+    for (const auto& key : keywords.keys()) {
+        const std::string name = Py::String(key).as_std_string();
+        if (!known.count(name)) {
+            throw Py::TypeError("cleanLines() has no keyword '" + name +
+                                "'; it takes minLength, remove, mergeEndToEnd and restore");
+        }
+    }
+    auto given = [&](const char* name) {
+        return keywords.hasKey(name) && keywords.getItem(name).ptr() != Py_None;
+    };
+    // Everything is read and checked before anything changes.
+    double minLength = e.MinLineLength.getValue();
+    if (given("minLength")) {
+        minLength = Py::Float(keywords.getItem("minLength")).as_double();
+        if (!(minLength >= 0.0)) {
+            throw Py::ValueError("minLength must be 0 or more, not " + std::to_string(minLength));
+        }
+    }
+    const bool restore = given("restore") && keywords.getItem("restore").isTrue();
+    std::vector<long> removed;
+    if (!restore) {
+        removed = e.RemovedLines.getValues();
+    }
+    if (given("remove")) {
+        const Py::Sequence wires(keywords.getItem("remove"));
+        for (Py_ssize_t i = 0; i < wires.length(); ++i) {
+            const Py::Object wire = wires[i];
+            const std::vector<long> ids = idsOfWire(e, Py::Long(wire).as_long());
+            removed.insert(removed.end(), ids.begin(), ids.end());
+        }
+    }
+    std::sort(removed.begin(), removed.end());
+    removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+    bool merge = !restore && e.MergeEndToEnd.getValue();
+    if (given("mergeEndToEnd")) {
+        merge = keywords.getItem("mergeEndToEnd").isTrue();
+    }
+    if (restore && !given("minLength")) {
+        minLength = 0.0;
+    }
+    e.MinLineLength.setValue(minLength);
+    e.RemovedLines.setValues(removed);
+    e.MergeEndToEnd.setValue(merge);
+    return Py::None();
 }
 
 } // namespace FeatureLines

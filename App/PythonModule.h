@@ -29,11 +29,12 @@ private:
     Py::Object readCloud(const Py::Tuple& args);
     Py::Object makePatchClouds(const Py::Tuple& args, const Py::Dict& keywords);
 
-    // Extraction: the lines of a cloud, the document object, the parameters.
+    // Extraction: the lines of a cloud, the document object, the parameters, cleaning the lines.
     void addExtractionFunctions();
     Py::Object extract(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object makeExtraction(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object listParameters(const Py::Tuple& args);
+    Py::Object cleanLines(const Py::Tuple& args, const Py::Dict& keywords);
 
     // Thresholds: curvature histograms and the interactive thresholding of Sec. 2.3.
     void addThresholdFunctions();

@@ -5,6 +5,7 @@
 #include <FCConfig.h>
 
 #include <App/Document.h>
+#include <App/PropertyUnits.h>
 #include <Base/Exception.h>
 #include <Base/Type.h>
 #include <Gui/Application.h>
@@ -12,10 +13,21 @@
 #include <Gui/Control.h>
 #include <Gui/MainWindow.h>
 #include <Gui/Selection.h>
+#include <Gui/SelectionObject.h>
 #include <Mod/Points/App/PointsFeature.h>
 
+#include <Mod/Part/App/PartFeature.h>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QObject>
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
 
 #include <string>
 #include <vector>
@@ -75,12 +87,25 @@ bool CmdFeatureLinesExtract::isActive()
 
 namespace {
 
+/// The FeatureLines::Extraction objects selected, each once (an object with edges selected is
+/// in the selection once per edge).
+std::vector<App::DocumentObject*> selectedExtractions()
+{
+    std::vector<App::DocumentObject*> unique;
+    for (App::DocumentObject* obj :
+         Gui::Selection().getObjectsOfType(Base::Type::fromName("FeatureLines::Extraction"))) {
+        if (std::find(unique.begin(), unique.end(), obj) == unique.end()) {
+            unique.push_back(obj);
+        }
+    }
+    return unique;
+}
+
 /// The one FeatureLines::Extraction selected, or nullptr after a message saying what to select
 /// (`what`: the command's name for the message).
 App::DocumentObject* selectedExtraction(const QString& what)
 {
-    const std::vector<App::DocumentObject*> selected =
-        Gui::Selection().getObjectsOfType(Base::Type::fromName("FeatureLines::Extraction"));
+    const std::vector<App::DocumentObject*> selected = selectedExtractions();
     if (selected.size() == 1) {
         return selected.front();
     }
@@ -98,8 +123,7 @@ App::DocumentObject* selectedExtraction(const QString& what)
 
 bool extractionSelected()
 {
-    return Gui::Selection().countObjectsOfType(Base::Type::fromName("FeatureLines::Extraction")) ==
-           1;
+    return selectedExtractions().size() == 1;
 }
 
 } // namespace
@@ -148,16 +172,13 @@ bool CmdFeatureLinesMakePatchClouds::isActive()
     return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
 }
 
-// ---- Colouring the cloud -----------------------------------------------------------------
-
-/// Colour the selected feature lines' cloud by one of its per-point outputs (the view's
-/// ColourPoints), or back to the plain cloud.
-class CmdFeatureLinesColourPoints : public Gui::Command
+/// A command on the one FeatureLines object selected, named and described by its arguments;
+/// apply() does its work.
+class CmdFeatureLinesOnLines : public Gui::Command
 {
 public:
-    CmdFeatureLinesColourPoints(const char* name, const char* mode, const char* menuText,
-                                const char* toolTip)
-        : Command(name), mode(mode)
+    CmdFeatureLinesOnLines(const char* name, const char* menuText, const char* toolTip)
+        : Command(name)
     {
         sAppModule = "FeatureLines";
         sGroup = QT_TR_NOOP("FeatureLines");
@@ -166,22 +187,41 @@ public:
         sWhatsThis = name;
         sStatusTip = toolTip;
     }
-    const char* className() const override { return "CmdFeatureLinesColourPoints"; }
 
 protected:
+    virtual void apply(App::DocumentObject* lines) = 0;
     void activated(int) override
     {
-        App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText));
-        if (!lines) {
-            return;
+        if (App::DocumentObject* lines = selectedExtraction(QString::fromUtf8(sMenuText))) {
+            apply(lines);
         }
-        // A view property: a macro line, kept with the document's view; "Plain cloud" removes it.
-        doCommand(Gui, "Gui.getDocument('%s').getObject('%s').ColourPoints = '%s'",
-                  lines->getDocument()->getName(), lines->getNameInDocument(), mode);
     }
     bool isActive() override
     {
         return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+    }
+};
+
+// ---- Colouring the cloud -----------------------------------------------------------------
+
+/// Colour the selected feature lines' cloud by one of its per-point outputs (the view's
+/// ColourPoints), or back to the plain cloud.
+class CmdFeatureLinesColourPoints : public CmdFeatureLinesOnLines
+{
+public:
+    CmdFeatureLinesColourPoints(const char* name, const char* mode, const char* menuText,
+                                const char* toolTip)
+        : CmdFeatureLinesOnLines(name, menuText, toolTip), mode(mode)
+    {
+    }
+    const char* className() const override { return "CmdFeatureLinesColourPoints"; }
+
+protected:
+    void apply(App::DocumentObject* lines) override
+    {
+        // A view property: a macro line, kept with the document's view; "Plain cloud" removes it.
+        doCommand(Gui, "Gui.getDocument('%s').getObject('%s').ColourPoints = '%s'",
+                  lines->getDocument()->getName(), lines->getNameInDocument(), mode);
     }
 
 private:
@@ -206,11 +246,191 @@ const char* const colourCommands[][4] = {
      QT_TR_NOOP("Draw the cloud of the selected feature lines as it is again.")},
 };
 
+// ---- Cleaning the lines ------------------------------------------------------------------
+
+namespace {
+
+/// Runs FeatureLines.cleanLines(<lines>, <arguments>) and recomputes, as one undo step named
+/// `step`; a refusal aborts the step and is shown.
+void runCleanLines(Gui::Command& command, App::DocumentObject* lines, const char* step,
+                   const std::string& arguments)
+{
+    const char* doc = lines->getDocument()->getName();
+    command.openCommand(step);
+    try {
+        Gui::Command::doCommand(Gui::Command::Doc, "import FeatureLines");
+        Gui::Command::doCommand(
+            Gui::Command::Doc, "FeatureLines.cleanLines(App.getDocument('%s').getObject('%s'), %s)",
+            doc, lines->getNameInDocument(), arguments.c_str());
+        Gui::Command::doCommand(Gui::Command::Doc, "App.getDocument('%s').recompute()", doc);
+        command.commitCommand();
+    } catch (const Base::Exception& e) {
+        command.abortCommand();
+        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("Lines not cleaned"),
+                             QString::fromUtf8(e.what()));
+    }
+}
+
+/// The wires (0-based, in Shape's order) holding the edges selected of `lines`.
+std::vector<int> selectedWires(App::DocumentObject* lines)
+{
+    const TopoDS_Shape& shape = static_cast<Part::Feature*>(lines)->Shape.getValue();
+    TopTools_IndexedMapOfShape edges, wires;
+    TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+    TopExp::MapShapes(shape, TopAbs_WIRE, wires);
+    std::set<int> picked;
+    for (const Gui::SelectionObject& s : Gui::Selection().getSelectionEx()) {
+        if (s.getObject() != lines) {
+            continue;
+        }
+        for (const std::string& sub : s.getSubNames()) {
+            if (sub.rfind("Edge", 0) != 0) {
+                continue;
+            }
+            const int edge = std::atoi(sub.c_str() + 4);
+            if (edge < 1 || edge > edges.Extent()) {
+                continue;
+            }
+            for (int w = 1; w <= wires.Extent(); ++w) {
+                TopTools_IndexedMapOfShape wireEdges;
+                TopExp::MapShapes(wires(w), TopAbs_EDGE, wireEdges);
+                if (wireEdges.Contains(edges(edge))) {
+                    picked.insert(w - 1);
+                    break;
+                }
+            }
+        }
+    }
+    return {picked.begin(), picked.end()};
+}
+
+} // namespace
+
+DEF_STD_CMD_A(CmdFeatureLinesDropShortLines)
+
+CmdFeatureLinesDropShortLines::CmdFeatureLinesDropShortLines()
+    : Command("FeatureLines_DropShortLines")
+{
+    sAppModule = "FeatureLines";
+    sGroup = QT_TR_NOOP("FeatureLines");
+    sMenuText = QT_TR_NOOP("Drop short lines...");
+    sToolTipText = QT_TR_NOOP("Drops the lines of the selected feature lines shorter than a "
+                              "length you give\n(kept as its MinLineLength: 0 brings them back).");
+    sWhatsThis = "FeatureLines_DropShortLines";
+    sStatusTip = sToolTipText;
+}
+
+void CmdFeatureLinesDropShortLines::activated(int)
+{
+    App::DocumentObject* lines = selectedExtraction(QObject::tr("Drop short lines"));
+    if (!lines) {
+        return;
+    }
+    auto* current = dynamic_cast<App::PropertyLength*>(lines->getPropertyByName("MinLineLength"));
+    auto* spacing = dynamic_cast<App::PropertyLength*>(lines->getPropertyByName("Spacing"));
+    const double proposed = current && current->getValue() > 0.0 ? current->getValue()
+                            : spacing                            ? 10.0 * spacing->getValue()
+                                                                 : 1.0;
+    bool ok = false;
+    const double length = QInputDialog::getDouble(
+        Gui::getMainWindow(), QObject::tr("Drop short lines"),
+        QObject::tr("Drop the lines shorter than (mm; 0 keeps every line):"), proposed, 0.0, 1e9, 3,
+        &ok);
+    if (!ok) {
+        return;
+    }
+    runCleanLines(*this, lines, QT_TRANSLATE_NOOP("Command", "Drop short lines"),
+                  "minLength=" + std::to_string(length));
+}
+
+bool CmdFeatureLinesDropShortLines::isActive()
+{
+    return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+}
+
+DEF_STD_CMD_A(CmdFeatureLinesDeleteLines)
+
+CmdFeatureLinesDeleteLines::CmdFeatureLinesDeleteLines() : Command("FeatureLines_DeleteLines")
+{
+    sAppModule = "FeatureLines";
+    sGroup = QT_TR_NOOP("FeatureLines");
+    sMenuText = QT_TR_NOOP("Delete selected lines");
+    sToolTipText = QT_TR_NOOP("Deletes the lines of the feature lines whose edges are selected in "
+                              "the 3D view\n(kept as its RemovedLines: empty it to bring them "
+                              "back).");
+    sWhatsThis = "FeatureLines_DeleteLines";
+    sStatusTip = sToolTipText;
+}
+
+void CmdFeatureLinesDeleteLines::activated(int)
+{
+    App::DocumentObject* lines = selectedExtraction(QObject::tr("Delete selected lines"));
+    if (!lines) {
+        return;
+    }
+    const std::vector<int> wires = selectedWires(lines);
+    if (wires.empty()) {
+        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("Select lines"),
+                             QObject::tr("Select the lines to delete in the 3D view (click on "
+                                         "them, Ctrl+click for more), then run Delete selected "
+                                         "lines again."));
+        return;
+    }
+    std::string list;
+    for (int w : wires) {
+        list += (list.empty() ? "" : ", ") + std::to_string(w);
+    }
+    runCleanLines(*this, lines, QT_TRANSLATE_NOOP("Command", "Delete selected lines"),
+                  "remove=[" + list + "]");
+    Gui::Selection().clearSelection();
+}
+
+bool CmdFeatureLinesDeleteLines::isActive()
+{
+    return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+}
+
+/// A cleaning of the selected feature lines with fixed arguments of cleanLines.
+class CmdFeatureLinesCleanLines : public CmdFeatureLinesOnLines
+{
+public:
+    CmdFeatureLinesCleanLines(const char* name, const char* arguments, const char* menuText,
+                              const char* toolTip)
+        : CmdFeatureLinesOnLines(name, menuText, toolTip), arguments(arguments)
+    {
+    }
+    const char* className() const override { return "CmdFeatureLinesCleanLines"; }
+
+protected:
+    void apply(App::DocumentObject* lines) override
+    {
+        runCleanLines(*this, lines, sMenuText, arguments);
+    }
+
+private:
+    const char* arguments;
+};
+
+/// The cleanings with fixed arguments: name, cleanLines arguments, menu text, tool tip.
+const char* const cleaningCommands[][4] = {
+    {"FeatureLines_MergeLines", "mergeEndToEnd=True", QT_TR_NOOP("Merge lines meeting end to end"),
+     QT_TR_NOOP("Joins two lines of the selected feature lines whose ends meet at a point\nwhere "
+                "no other line ends into one line (kept as its MergeEndToEnd).")},
+    {"FeatureLines_RestoreLines", "restore=True", QT_TR_NOOP("Restore all lines"),
+     QT_TR_NOOP("Brings back every line of the selected feature lines: no line deleted, dropped "
+                "or merged.")},
+};
+
 void CreateFeatureLinesCommands()
 {
     Gui::CommandManager& manager = Gui::Application::Instance->commandManager();
     manager.addCommand(new CmdFeatureLinesExtract());
     manager.addCommand(new CmdFeatureLinesMakePatchClouds());
+    manager.addCommand(new CmdFeatureLinesDropShortLines());
+    manager.addCommand(new CmdFeatureLinesDeleteLines());
+    for (const auto& c : cleaningCommands) {
+        manager.addCommand(new CmdFeatureLinesCleanLines(c[0], c[1], c[2], c[3]));
+    }
     for (const auto& c : colourCommands) {
         manager.addCommand(new CmdFeatureLinesColourPoints(c[0], c[1], c[2], c[3]));
     }
