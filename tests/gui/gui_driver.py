@@ -192,7 +192,12 @@ def start_macro_recording(name):
 
 
 def stop_macro_recording(path):
-    FreeCADGui.runCommand("Std_MacroStopRecord")
+    # Macro > Stop macro recording: its own command in FreeCAD 0.20; from 1.0 on the recording
+    # command itself stops a running recording.
+    stop = "Std_MacroStopRecord"
+    if stop not in FreeCADGui.listCommands():
+        stop = "Std_DlgMacroRecord"
+    FreeCADGui.runCommand(stop)
     check(os.path.isfile(path), "the recorder wrote " + path)
     with open(path) as f:
         return f.read()
