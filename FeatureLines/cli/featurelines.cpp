@@ -206,8 +206,9 @@ int runInfo(const Arguments& a)
     NeighbourOptions nopt;
     nopt.k = static_cast<int>(k);
     nopt.threads = threads;
-    std::cout << "mean spacing: " << Arguments::format(meanSpacing(nearestNeighbours(P, nopt)))
-              << "\n";
+    // Computed before anything is printed: a refused cloud leaves no half-written line.
+    const double spacing = meanSpacing(nearestNeighbours(P, nopt));
+    std::cout << "mean spacing: " << Arguments::format(spacing) << "\n";
     return 0;
 }
 

@@ -135,6 +135,9 @@ for command in info curvature threshold; do
     expect 1 "more than 1e8 times its size" "$work/far.xyz" \
         $command "$work/far.xyz" $([ $command = curvature ] && echo "-o $work/f.H")
 done
+# info computes the spacing before it prints it: a refused cloud leaves no half-written line.
+"$bin" info "$work/far.xyz" > "$work/out" 2> /dev/null
+grep -q "mean spacing" "$work/out" && fail "info on a refused cloud printed a 'mean spacing' line"
 { cat "$cloud"; echo "1e8 0 0"; } > "$work/outlier.xyz"
 expect 1 "more than 1024 points lie in one cell" "$work/outlier.xyz" info "$work/outlier.xyz"
 expect 1 "more than 1024 points lie in one cell" "$work/outlier.xyz" \
