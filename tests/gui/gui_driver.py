@@ -256,19 +256,31 @@ def prepare_window():
     # The tests' screen is 1366 x 768 (tests/gui/CMakeLists.txt): maximized, the window fills it.
     mw.showMaximized()
     settle(0.2)
-    dock = mw.findChild(QtWidgets.QDockWidget, "Combo View")
-    log("main window %d x %d, combo view %d px wide" % (mw.width(), mw.height(),
-                                                        dock.width() if dock else -1))
+    dock = task_dock()
+    log("main window %d x %d, %s %d px wide" % (mw.width(), mw.height(),
+                                               dock.objectName() if dock else "task dock",
+                                               dock.width() if dock else -1))
+
+
+def task_dock():
+    """The dock that holds FreeCAD's task view. Release difference: FreeCAD 0.20 shows the
+    task view as a tab of the "Combo View" dock, FreeCAD 1.0 in a dock of its own ("Tasks")."""
+    for dock in main_window().findChildren(QtWidgets.QDockWidget):
+        for child in dock.findChildren(QtWidgets.QWidget):
+            if child.metaObject().className() == "Gui::TaskView::TaskView":
+                return dock
+    return None
 
 
 def narrow_combo_view(width=230):
-    """The combo view (and the task panel in it) `width` pixels wide, as a user drags it."""
+    """The dock of the task panel (the combo view on 0.20) `width` pixels wide, as a user
+    drags it."""
     mw = main_window()
-    dock = mw.findChild(QtWidgets.QDockWidget, "Combo View")
-    check(dock is not None, "no Combo View dock")
+    dock = task_dock()
+    check(dock is not None, "no dock holds the task view")
     mw.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
     settle(0.5)
-    log("combo view %d px wide" % dock.width())
+    log("%s %d px wide" % (dock.objectName(), dock.width()))
 
 
 # What a user reads or clicks in the panel: none may stick out of the panel's visible width.
