@@ -488,6 +488,16 @@ void writeXyz(const std::string& path, const PointMatrix& P, int digits)
     }
 }
 
+/// --write: the cloud and its truth as DIR/<caseName>/cloud.xyz and truth.json.
+void writeCase(const std::string& writeDir, const std::string& caseName, const PointMatrix& points,
+               const std::vector<TypedPolyline>& truth, const std::string& shape, double spacing)
+{
+    const std::filesystem::path dir = std::filesystem::path(writeDir) / caseName;
+    std::filesystem::create_directories(dir);
+    writeXyz((dir / "cloud.xyz").string(), points, 9);
+    writeLinesJson((dir / "truth.json").string(), truth, shape, spacing);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Detectors and the table.
 
@@ -776,10 +786,7 @@ void measurePart(const CadShape& part, const std::string& group, unsigned seed,
         }
         const std::string caseName = part.name + "-" + noise;
         if (!args.writeDir.empty()) {
-            const std::filesystem::path dir = std::filesystem::path(args.writeDir) / caseName;
-            std::filesystem::create_directories(dir);
-            writeXyz((dir / "cloud.xyz").string(), cloud.points, 9);
-            writeLinesJson((dir / "truth.json").string(), s.truth, part.name, s.spacing);
+            writeCase(args.writeDir, caseName, cloud.points, s.truth, part.name, s.spacing);
         }
 
         // The project's extraction.
@@ -998,11 +1005,8 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
               << record.points << " points, noise " << noise << std::endl;
 
     if (!args.writeDir.empty()) {
-        const std::filesystem::path dir =
-            std::filesystem::path(args.writeDir) / ("random-" + std::to_string(seed));
-        std::filesystem::create_directories(dir);
-        writeXyz((dir / "cloud.xyz").string(), cloud.points, 9);
-        writeLinesJson((dir / "truth.json").string(), s.truth, name, s.spacing);
+        writeCase(args.writeDir, "random-" + std::to_string(seed), cloud.points, s.truth, name,
+                  s.spacing);
     }
 
     const auto start = std::chrono::steady_clock::now();
