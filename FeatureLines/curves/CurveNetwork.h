@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The lines as CAD geometry: every line piece between two junctions (or a closed loop) fitted
+// by a straight segment, a circular arc, a circle or a cubic B-spline; one vertex per junction,
+// shared by every edge that meets there; and the closed border loops of each surface patch.
+// Plain data: no OpenCASCADE types (App/ builds the TopoDS shapes from it).
+// Design: docs/design/curves.md.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "FeatureLines/Extraction.h"
+#include "FeatureLines/PointCloud.h"
+
+namespace featurelines {
+
+enum class CurveKind : std::uint8_t
+{
+    Segment,
+    Arc,
+    Circle,
+    BSpline,
+};
+
+/// "segment", "arc", "circle", "bspline".
+const char* curveKindName(CurveKind kind);
+
+/// One fitted curve. Its ends are exactly its edge's vertices (for a closed edge, start ==
+/// end == the one vertex).
+struct FittedCurve
+{
+    CurveKind kind = CurveKind::BSpline;
+    /// Every kind: the first and last point of the curve.
+    Eigen::Vector3d start = Eigen::Vector3d::Zero();
+    Eigen::Vector3d end = Eigen::Vector3d::Zero();
+    /// Arc and Circle: centre, unit axis and radius; an arc runs counter-clockwise about
+    /// `axis` from `start` to `end`; a circle starts and ends at `start`.
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    double radius = 0.0;
+    /// BSpline, in OpenCASCADE's convention: degree, poles  #P by 3, the distinct knots and
+    /// their multiplicities; clamped (first and last pole are `start` and `end`) unless
+    /// `periodic` (a closed loop without vertex of degree other than 2).
+    int degree = 3;
+    PointMatrix poles;
+    std::vector<double> knots;
+    std::vector<int> multiplicities;
+    bool periodic = false;
+    /// Distance from the polyline's vertices to the curve, in model units.
+    double rmsDeviation = 0.0;
+    double maxDeviation = 0.0;
+};
+
+/// One edge of the network: a fitted piece of one extracted line.
+struct NetworkEdge
+{
+    LineType type = LineType::Sharp;
+    /// Row of ExtractionResult::lines the piece comes from.
+    int line = -1;
+    /// Rows of CurveNetwork::vertices; equal for a closed edge.
+    int startVertex = -1;
+    int endVertex = -1;
+    FittedCurve curve;
+    /// V  #V by 3 the polyline vertices the curve was fitted to (the line's, from start to
+    /// end vertex).
+    PointMatrix points;
+};
+
+struct CurveNetwork
+{
+    /// N  #N by 3 vertex positions: the junctions, the free ends of open lines, and one vertex
+    /// on each closed loop.
+    PointMatrix vertices;
+    std::vector<NetworkEdge> edges;
+};
+
+/// An edge of a border loop, walked forwards (start to end vertex) or reversed.
+struct LoopEdge
+{
+    int edge = -1;
+    bool reversed = false;
+};
+
+/// The border of one surface patch (ExtractionResult::patch ids).
+struct PatchBorder
+{
+    int patch = -1;
+    /// Closed loops of edges, each running end to start; the first is the outer loop (the
+    /// longest), the others holes.
+    std::vector<std::vector<LoopEdge>> loops;
+    /// Edges that touch the patch but close no loop (where the lines found leave the patch
+    /// open). Empty when the patch's border is closed.
+    std::vector<int> openEdges;
+    bool closed() const { return !loops.empty() && openEdges.empty(); }
+};
+
+struct CurveFitOptions
+{
+    /// The fitting tolerance in point spacings (ExtractionResult::spacing), raised to twice the
+    /// noise estimated from the polyline's scatter where that is larger.
+    double tolerance = 0.25;
+};
+
+/// The network of fitted curves of `result`'s lines.
+CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options = {});
+
+/// Every patch's border in `network`: P  #P by 3 the cloud the result came from (the patch ids
+/// of result.patch are per row of P).
+std::vector<PatchBorder> patchBorders(const CurveNetwork& network, const ExtractionResult& result,
+                                      const PointMatrix& points);
+
+} // namespace featurelines
