@@ -13,13 +13,13 @@
 #include <omp.h>
 
 #include "FeatureLines/io/CloudIO.h"
-#include "FeatureLines/support/DisjointSets.h"
-#include "FeatureLines/support/HugePages.h"
-#include "FeatureLines/support/IdleThreads.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/smooth/SmoothEdgeLevel.h"
+#include "FeatureLines/support/DisjointSets.h"
+#include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 namespace featurelines {
 
@@ -253,8 +253,8 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     requireDistinctSurface(g.points, P.rows(), options.k);
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
-    releaseIdleThreads(); // meanSpacing is a serial sum
-    g.spacing = meanSpacing(g.neighbours);
+    releaseIdleThreads(); // samplingSpacing is serial
+    g.spacing = samplingSpacing(g.neighbours);
     report(progress, 0.3, "normals");
     g.normals = pcaNormals(g.points, g.neighbours);
     return g;

@@ -40,7 +40,7 @@ struct Boundary
 
 /// The boundary points of the cloud chained into lines by the cluster graph (every boundary
 /// point a candidate cluster of its own). A closed surface gives an empty network.
-///   spacing  the cloud's mean point spacing, see meanSpacing()
+///   spacing  the cloud's sampling spacing, see samplingSpacing()
 /// Throws std::invalid_argument for mismatched sizes or a spacing that is not positive.
 Boundary extractBoundary(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
                          double spacing, const BoundaryOptions& options = {});
