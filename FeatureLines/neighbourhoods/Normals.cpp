@@ -98,7 +98,7 @@ int neighbourCount(const PointMatrix& P, const Neighbourhoods& N, const NormalOp
 } // namespace
 
 NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
-                          const NormalOptions& options)
+                          const NormalOptions& options, const ProgressSpan& progress)
 {
     const int k = neighbourCount(P, N, options);
     const Eigen::Index n = P.rows();
@@ -106,10 +106,14 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
     result.normals.resize(n, 3);
     result.variation.resize(n);
     adviseHugePagesOf(result.normals);
+    LoopProgress loop(progress, n);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
-        fitNormal(P, N, i, k, result.normals, &result.variation);
+        if (loop.next(i)) {
+            fitNormal(P, N, i, k, result.normals, &result.variation);
+        }
     }
+    loop.finish();
     return result;
 }
 
