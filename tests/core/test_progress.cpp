@@ -45,11 +45,10 @@ ProgressCallback recorder(std::vector<Call>& calls, size_t cancelAt = 0)
     };
 }
 
-/// A parallel loop over n items with progress in [0.2, 0.6] of the run; returns the items
-/// whose work ran.
-long parallelLoop(ProgressReporter& reporter, long n)
+/// A parallel loop over n items with progress in [0.2, 0.6] of the run, counting in `worked`
+/// the items whose work ran; returns their number.
+long parallelLoop(ProgressReporter& reporter, long n, std::atomic<long>& worked)
 {
-    std::atomic<long> worked{0};
     LoopProgress loop(ProgressSpan(reporter, 0.2, 0.6), n);
 #pragma omp parallel for schedule(static, 64)
     for (long i = 0; i < n; ++i) {
@@ -62,10 +61,17 @@ long parallelLoop(ProgressReporter& reporter, long n)
     return worked;
 }
 
+long parallelLoop(ProgressReporter& reporter, long n)
+{
+    std::atomic<long> worked{0};
+    return parallelLoop(reporter, n, worked);
+}
+
 } // namespace
 
 TEST(Progress, ALoopTellsRisingSharesWithinItsSpanFromTheCallingThread)
 {
+    const TwoThreads threads;
     std::vector<Call> calls;
     ProgressReporter reporter(recorder(calls), 0.0);
     reporter.stage(0.2, "loop");
@@ -97,20 +103,13 @@ TEST(Progress, WithinAStageTheIntervalSpacesTheCalls)
 
 TEST(Progress, ACancelStopsTheLoopAndThrows)
 {
+    const TwoThreads threads;
     std::vector<Call> calls;
     ProgressReporter reporter(recorder(calls, 5), 0.0);
     reporter.stage(0.2, "loop");
     std::atomic<long> worked{0};
     const long n = 64000;
-    LoopProgress loop(ProgressSpan(reporter, 0.2, 0.6), n);
-#pragma omp parallel for schedule(static, 64)
-    for (long i = 0; i < n; ++i) {
-        if (!loop.next(i)) {
-            continue;
-        }
-        ++worked;
-    }
-    EXPECT_THROW(loop.finish(), ExtractionCancelled);
+    EXPECT_THROW(parallelLoop(reporter, n, worked), ExtractionCancelled);
     EXPECT_EQ(calls.size(), 5u); // none after the cancelling one
     EXPECT_LT(worked.load(), n);
     EXPECT_TRUE(reporter.cancelled());
