@@ -13,6 +13,7 @@
 #include <omp.h>
 
 #include "FeatureLines/io/CloudIO.h"
+#include "FeatureLines/neighbourhoods/BalancedNeighbourhoods.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
@@ -260,11 +261,18 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     reporter.stage(stageStart::neighbours, "neighbours");
     g.neighbours = nearestNeighbours(
         g.points, options, ProgressSpan(reporter, stageStart::neighbours, stageStart::normals));
-    releaseIdleThreads(); // meanSpacing is a serial sum
-    g.spacing = meanSpacing(g.neighbours);
     reporter.stage(stageStart::normals, "normals");
     g.normals = pcaNormals(g.points, g.neighbours, {},
                            ProgressSpan(reporter, stageStart::normals, stageStart::sharpEdges));
+    // Scan rows too far apart for k neighbours to leave their own row: such neighbourhoods
+    // reach across the rows, and their normals are estimated again.
+    const std::vector<int> rebuilt =
+        balanceCollinearNeighbourhoods(g.points, g.neighbours, g.normals.spread);
+    if (!rebuilt.empty()) {
+        pcaNormalsOfRows(g.points, g.neighbours, rebuilt, g.normals.normals);
+    }
+    releaseIdleThreads(); // samplingSpacing is serial
+    g.spacing = samplingSpacing(g.neighbours);
     return g;
 }
 
