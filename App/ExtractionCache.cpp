@@ -104,8 +104,8 @@ std::shared_ptr<const CloudGeometry> findOrAnalyseCloud(const PointMatrix& P,
     std::shared_ptr<const CloudGeometry> g;
     {
         CoreTimer timer(coreSeconds);
-        g = std::make_shared<const CloudGeometry>(
-            featurelines::analyseCloud(P, options.neighbours, options.progress));
+        g = std::make_shared<const CloudGeometry>(featurelines::analyseCloud(
+            P, options.neighbours, options.progress, options.progressInterval));
     }
     std::lock_guard<std::mutex> lock(c.mutex);
     c.geometry.insert(key, g, c.capacity);

@@ -18,6 +18,7 @@
 #include "FeatureLines/smooth/RegionGeometry.h"
 #include "FeatureLines/smooth/SmoothEdgeOptions.h"
 #include "FeatureLines/smooth/SmoothRegions.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -79,14 +80,13 @@ struct ExtractionOptions
     std::vector<double> thresholds;
     /// Explicit mode: the curvature thresholds of the listed regions, by region number.
     std::map<int, std::vector<double>> regionThresholds;
-    /// Called between stages with the share of the work done (0..1) and the stage's name;
-    /// returning false cancels the extraction (ExtractionCancelled is thrown). Default none.
-    std::function<bool(double, const std::string&)> progress;
-};
-
-struct ExtractionCancelled : std::runtime_error
-{
-    ExtractionCancelled() : std::runtime_error("the feature line extraction was cancelled") {}
+    /// Called with the share of the work done (0..1) and the stage's name at each stage and,
+    /// within the long ones, as their loops go (support/Progress.h); returning false cancels
+    /// the extraction (ExtractionCancelled is thrown). Called on the caller's thread only.
+    /// Default none.
+    ProgressCallback progress;
+    /// Within a stage, the least time between two calls of `progress`, seconds. Default 0.2.
+    double progressInterval = 0.2;
 };
 
 /// The geometry every extraction of one cloud shares, whatever its thresholds: computed once
@@ -113,7 +113,7 @@ void requireSurfaceCloud(const PointMatrix& P, int k);
 /// Validates the cloud (requireSurfaceCloud) and computes neighbours, normals and spacing.
 /// Throws std::invalid_argument naming the problem.
 CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options = {},
-                           const std::function<bool(double, const std::string&)>& progress = {});
+                           const ProgressCallback& progress = {}, double progressInterval = 0.2);
 
 struct RegionReport
 {

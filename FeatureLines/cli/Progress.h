@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The featurelines tool's progress on standard error: the share done, the stage and the time
 // left. Shown when standard error is a terminal (one line rewritten in place) or with
-// --progress (one line per stage, or every few seconds within one); never with --quiet.
+// --progress (a line when the stage changes, and every second within one, --progress-every);
+// never with --quiet. The core reports within its long stages (support/Progress.h), so the
+// share and the time left move within a stage too.
 #pragma once
 
 #include <algorithm>
@@ -56,9 +58,10 @@ public:
     using Clock = std::chrono::steady_clock;
 
     /// `terminal`: rewrite one line in place (carriage return), at most ten times a second;
-    /// else write a line when the stage changes or 5 s after the last one.
-    ProgressReport(std::ostream& out, std::string name, bool terminal)
-        : out_(out), name_(std::move(name)), terminal_(terminal), start_(Clock::now())
+    /// else write a line when the stage changes or `lineInterval` seconds after the last one.
+    ProgressReport(std::ostream& out, std::string name, bool terminal, double lineInterval = 1.0)
+        : out_(out), name_(std::move(name)), terminal_(terminal), lineInterval_(lineInterval),
+          start_(Clock::now())
     {
     }
 
@@ -70,7 +73,8 @@ public:
         const Clock::time_point now = Clock::now();
         const double sinceLast = std::chrono::duration<double>(now - last_).count();
         const bool stageChanged = stage != stage_;
-        if (written_ && !(terminal_ ? sinceLast >= 0.1 : stageChanged || sinceLast >= 5.0)) {
+        if (written_ &&
+            !(terminal_ ? sinceLast >= 0.1 : stageChanged || sinceLast >= lineInterval_)) {
             return true;
         }
         show(progressLine("featurelines: " + name_, done, stage, seconds(now)));
@@ -123,6 +127,7 @@ private:
     std::ostream& out_;
     std::string name_;
     bool terminal_;
+    double lineInterval_;
     Clock::time_point start_;
     Clock::time_point last_{};
     std::string stage_;

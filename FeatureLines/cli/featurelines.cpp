@@ -537,6 +537,9 @@ ProgressMode progressMode(const Arguments& a)
     if (a.has("--quiet") && a.has("--progress")) {
         throw UsageError("--quiet and --progress exclude each other");
     }
+    if (a.has("--progress-every") && !a.has("--progress")) {
+        throw UsageError("--progress-every needs --progress");
+    }
     if (a.has("--quiet")) {
         return ProgressMode::None;
     }
@@ -637,11 +640,13 @@ std::string extractOne(const Arguments& a, const ExtractTarget& t, ExtractionOpt
     const PointMatrix cloud = readInput(t.input, format);
     requireBelowPointCount(a, "--k", options.neighbours.k, t.input, cloud.rows());
     requireBelowPointCount(a, "--bins", options.smooth.histogram.bins, t.input, cloud.rows());
-    ProgressReport report(std::cerr, inputName(t.input), mode == ProgressMode::Terminal);
+    const double every = a.number("--progress-every", 1.0, 0.0, 3600.0, true);
+    ProgressReport report(std::cerr, inputName(t.input), mode == ProgressMode::Terminal, every);
     if (mode != ProgressMode::None) {
         options.progress = [&report](double done, const std::string& stage) {
             return report(done, stage);
         };
+        options.progressInterval = std::min(options.progressInterval, every);
     }
     ExtractionResult r;
     try {
@@ -746,7 +751,7 @@ const std::vector<Command>& commands()
          "closed feature lines: sharp edges, smooth edges (fillet borders) and boundary",
          "INPUT... -o LINES.json|FOLDER [--labels FILE|FOLDER] [--thresholds T1,T2 | "
          "--threshold-mode M] [--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N] "
-         "[--progress | --quiet]",
+         "[--progress [--progress-every S] | --quiet]",
          {{"--output", "FILE",
            "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
            "\"points\"}], \"junctions\", \"regions\" (per region: its noise, thresholds used, "
@@ -781,6 +786,9 @@ const std::vector<Command>& commands()
           {"--progress", "",
            "progress and time left on standard error even when it is not a terminal (default: "
            "shown on a terminal only)"},
+          {"--progress-every", "S",
+           "with --progress, the least time between two lines within one stage, seconds "
+           "(default 1; 0: a line at every report, each 1/64 of a long loop's points)"},
           {"--quiet", "", "no progress on standard error"},
           kOption(),
           formatOption(),

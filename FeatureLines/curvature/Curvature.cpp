@@ -269,7 +269,8 @@ void curvatureOfPair(const CurvatureFit& fit, Eigen::Index i, const Frame& f0, c
 } // namespace
 
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
-                              const Neighbourhoods& N, const CurvatureOptions& options)
+                              const Neighbourhoods& N, const CurvatureOptions& options,
+                              const ProgressSpan& progress)
 {
     if (N.size() != P.rows() || normals.rows() != P.rows()) {
         throw std::invalid_argument("mean curvature: points (" + std::to_string(P.rows()) +
@@ -290,8 +291,12 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     // function over p's tangent plane, origin at p, axes (u, v, n). Two points at a time.
     const CurvatureFit fit{P, normals, N, k, options.signedCurvature};
     const Eigen::Index pairs = n / 2;
+    LoopProgress loop(progress, pairs);
 #pragma omp parallel for schedule(static, 2048) num_threads(threadCount(options.threads))
     for (Eigen::Index pair = 0; pair < pairs; ++pair) {
+        if (!loop.next(pair)) {
+            continue;
+        }
         const Eigen::Index i = 2 * pair;
         const Frame f0 = frameOf(normals, N, i, k), f1 = frameOf(normals, N, i + 1, k);
         if (!f0.valid || !f1.valid) {
@@ -301,6 +306,7 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
         }
         curvatureOfPair(fit, i, f0, f1, H.data() + i);
     }
+    loop.finish();
     if (n % 2 == 1) {
         H(n - 1) = curvatureOfOne(fit, n - 1, frameOf(normals, N, n - 1, k));
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -22,9 +23,11 @@ struct CurvatureOptions
 /// z = a x^2 + b xy + c y^2 + d x + e y + f fitted by least squares in the frame of each point's
 /// normal. A sphere of radius r gives 1/r, a cylinder 1/(2r), a plane 0. When signed, the sign
 /// follows the given normal (positive where the surface bends away from it); 0 where the fit is
-/// degenerate. Throws std::invalid_argument for sizes that disagree or k outside [5, N.k()].
+/// degenerate. `progress` is told as the fits go. Throws std::invalid_argument for sizes that
+/// disagree or k outside [5, N.k()].
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
-                              const Neighbourhoods& N, const CurvatureOptions& options = {});
+                              const Neighbourhoods& N, const CurvatureOptions& options = {},
+                              const ProgressSpan& progress = {});
 
 /// The height at point i of the quadric of meanCurvature() fitted to i's neighbours alone
 /// (all N.k() of them, not i itself), in i's normal frame (length unit). On a smooth surface

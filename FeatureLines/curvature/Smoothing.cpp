@@ -183,7 +183,8 @@ void jacobiStep(PointMatrix& current, PointMatrix& moved, const std::vector<int>
 } // namespace
 
 PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
-                            const std::vector<int>& subset, const SmoothingOptions& options)
+                            const std::vector<int>& subset, const SmoothingOptions& options,
+                            const ProgressSpan& progress)
 {
     checkInput(P, N, options);
     const Eigen::Index n = P.rows();
@@ -198,6 +199,7 @@ PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
         if (options.mu != 0.0) {
             jacobiStep(current, moved, subset, umbrellas, options.mu);
         }
+        progress.report(static_cast<double>(iteration + 1) / options.iterations);
     }
     return current;
 }

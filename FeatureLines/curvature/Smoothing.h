@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -21,10 +22,12 @@ struct SmoothingOptions
 
 /// Returns P with the points of `subset` smoothed; points outside it are copied unchanged and
 /// never act as neighbours, so a smooth region is not pulled over its sharp edges.
-/// `subset` holds point indices (any order, no duplicates). Throws std::invalid_argument for
+/// `subset` holds point indices (any order, no duplicates). `progress` is told after each
+/// iteration. Throws std::invalid_argument for
 /// neighbourhoods of another cloud, an index outside the cloud or listed twice, or options out of
 /// range.
 PointMatrix laplacianSmooth(const PointMatrix& P, const Neighbourhoods& N,
-                            const std::vector<int>& subset, const SmoothingOptions& options = {});
+                            const std::vector<int>& subset, const SmoothingOptions& options = {},
+                            const ProgressSpan& progress = {});
 
 } // namespace featurelines

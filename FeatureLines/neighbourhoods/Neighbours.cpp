@@ -346,7 +346,7 @@ public:
     }
 
     /// Every point's neighbours, the cells shared among the threads.
-    void run(int threads) const;
+    void run(int threads, const ProgressSpan& progress) const;
 
 private:
     /// The queries of one cell: each first within a box about it in the sub-cells of the 27
@@ -406,16 +406,20 @@ private:
     const double oneStep_;
 };
 
-void CellSearch::run(int threads) const
+void CellSearch::run(int threads, const ProgressSpan& progress) const
 {
+    LoopProgress loop(progress, cells_.count());
 #pragma omp parallel num_threads(threads)
     {
         Worker worker;
 #pragma omp for schedule(dynamic, 16)
         for (long cell = 0; cell < cells_.count(); ++cell) {
-            searchCell(cell, worker);
+            if (loop.next(cell)) {
+                searchCell(cell, worker);
+            }
         }
     }
+    loop.finish();
 }
 
 void CellSearch::searchCell(long cell, Worker& w) const
@@ -618,7 +622,8 @@ void Neighbourhoods::allocate(Eigen::Index rows, int k)
     adviseHugePagesOf(squaredDistances);
 }
 
-Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options)
+Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options,
+                                 const ProgressSpan& progress)
 {
     const int k = options.k;
     checkNeighbourInput(P, k);
@@ -637,7 +642,7 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
     const int level = searchLevel(order.keys, n, k);
     const Cells cells(order.keys, level);
     const CellSearchInput in{grid, order.points(P), order, cells, level, k};
-    CellSearch(in, result).run(threads);
+    CellSearch(in, result).run(threads, progress);
     return result;
 }
 

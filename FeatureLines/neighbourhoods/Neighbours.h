@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "FeatureLines/PointCloud.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -34,8 +35,10 @@ struct Neighbourhoods
 /// The k nearest other points of every point of P: an exact search over the cells of the
 /// points' Morton order (MortonOrder.h), on P itself when it comes in that order (as
 /// analyseCloud's points do), else on a sorted copy.
-/// Throws std::invalid_argument when P has no more than k points or options.k < 3.
-Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options = {});
+/// `progress` is told as the queries go. Throws std::invalid_argument when P has no more than k
+/// points or options.k < 3.
+Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& options = {},
+                                 const ProgressSpan& progress = {});
 
 /// Mean distance from each point to its nearest neighbour at a distance above zero (exact
 /// duplicates are not spacing). Every default length of the library is a multiple of it.

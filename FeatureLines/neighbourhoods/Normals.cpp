@@ -101,7 +101,7 @@ int neighbourCount(const PointMatrix& P, const Neighbourhoods& N, const NormalOp
 } // namespace
 
 NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
-                          const NormalOptions& options)
+                          const NormalOptions& options, const ProgressSpan& progress)
 {
     const int k = neighbourCount(P, N, options);
     const Eigen::Index n = P.rows();
@@ -110,10 +110,14 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
     result.variation.resize(n);
     result.spread.resize(n);
     adviseHugePagesOf(result.normals);
+    LoopProgress loop(progress, n);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
-        fitNormal(P, N, i, k, result.normals, &result.variation, &result.spread);
+        if (loop.next(i)) {
+            fitNormal(P, N, i, k, result.normals, &result.variation, &result.spread);
+        }
     }
+    loop.finish();
     return result;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -30,9 +31,9 @@ struct NormalEstimate
     Eigen::VectorXd spread;
 };
 
-/// PCA normals of P over the neighbourhoods N.
+/// PCA normals of P over the neighbourhoods N; `progress` is told as the fits go.
 NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
-                          const NormalOptions& options = {});
+                          const NormalOptions& options = {}, const ProgressSpan& progress = {});
 
 /// The same normals for the listed rows of P only, written into `normals` (#P by 3); the other
 /// rows are left as they are. For a sub-cloud whose neighbourhoods are those of its cloud

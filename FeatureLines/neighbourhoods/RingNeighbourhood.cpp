@@ -323,7 +323,8 @@ RingNeighbourhoods packRings(std::vector<std::vector<int>>& blockRings,
 } // namespace
 
 RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& normals,
-                                      const Neighbourhoods& N, const RingOptions& options)
+                                      const Neighbourhoods& N, const RingOptions& options,
+                                      const ProgressSpan& progress)
 {
     if (N.size() != P.rows() || normals.rows() != P.rows()) {
         throw std::invalid_argument("ring neighbourhoods: points (" + std::to_string(P.rows()) +
@@ -336,17 +337,22 @@ RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& 
     const Eigen::Index blocks = (n + ringBlock - 1) / ringBlock;
     std::vector<std::vector<int>> blockRings(static_cast<size_t>(blocks));
     std::vector<int> counts(n, 0);
+    LoopProgress loop(progress, blocks);
 #pragma omp parallel num_threads(threadCount(options.threads))
     {
         RingWorker worker(N.k());
 #pragma omp for schedule(static, 1)
         for (Eigen::Index b = 0; b < blocks; ++b) {
+            if (!loop.next(b)) {
+                continue;
+            }
             std::vector<int>& rings = blockRings[static_cast<size_t>(b)];
             for (Eigen::Index i = b * ringBlock; i < std::min(n, (b + 1) * ringBlock); ++i) {
                 counts[i] = ringOf(in, i, worker, rings);
             }
         }
     }
+    loop.finish();
     return packRings(blockRings, counts, threadCount(options.threads));
 }
 

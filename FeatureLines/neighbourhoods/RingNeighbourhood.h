@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -30,7 +31,9 @@ struct RingOptions
 /// The 1-ring of every point: the neighbours q of p whose projection onto p's tangent plane is
 /// a Delaunay neighbour of p among the projected k nearest neighbours. A point at the border
 /// of an open cloud keeps its neighbours on the convex side. Typically 5 or 6 per point.
+/// `progress` is told as the rings go.
 RingNeighbourhoods ringNeighbourhoods(const PointMatrix& P, const NormalMatrix& normals,
-                                      const Neighbourhoods& N, const RingOptions& options = {});
+                                      const Neighbourhoods& N, const RingOptions& options = {},
+                                      const ProgressSpan& progress = {});
 
 } // namespace featurelines

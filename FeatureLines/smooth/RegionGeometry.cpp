@@ -20,8 +20,8 @@
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/AutomaticThresholds.h"
-#include "FeatureLines/smooth/PointValues.h"
 #include "FeatureLines/smooth/LineBand.h"
+#include "FeatureLines/smooth/PointValues.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/support/HugePages.h"
 #include "FeatureLines/support/IdleThreads.h"
@@ -86,16 +86,19 @@ NormalMatrix orientedNormals(NormalMatrix normals, const Neighbourhoods& N)
 /// would lift a flat face's noise, which has both signs, to a positive level.
 Eigen::VectorXd regionCurvature(const PointMatrix& P, const NormalMatrix& normals,
                                 const Neighbourhoods& N, int averagingPasses,
-                                const CurvatureOptions& options)
+                                const CurvatureOptions& options, const ProgressSpan& progress = {})
 {
     if (averagingPasses == 0) {
-        return meanCurvature(P, normals, N, options);
+        return meanCurvature(P, normals, N, options, progress);
     }
     CurvatureOptions signedOptions = options;
     signedOptions.signedCurvature = true;
-    Eigen::VectorXd H = meanCurvature(P, orientedNormals(normals, N), N, signedOptions);
+    const NormalMatrix oriented = orientedNormals(normals, N);
+    progress.report(0.2);
+    Eigen::VectorXd H = meanCurvature(P, oriented, N, signedOptions, progress.part(0.2, 0.7));
     for (int pass = 0; pass < averagingPasses; ++pass) {
         H = averageOverNeighbours(H, N);
+        progress.report(0.7 + 0.3 * (pass + 1) / averagingPasses);
     }
     return options.signedCurvature ? H : Eigen::VectorXd(H.cwiseAbs());
 }
@@ -333,27 +336,34 @@ struct CoarseScale
 /// The region's raw points averaged onto the grid of `scale` region spacings, analysed as a
 /// region of their own, its rim filled from its interior.
 std::shared_ptr<RegionGeometry> coarseGeometry(const GridCentroids& grid, const RegionGeometry& g,
-                                               const SmoothEdgeOptions& coarseOptions)
+                                               const SmoothEdgeOptions& coarseOptions,
+                                               const ProgressSpan& progress)
 {
     NeighbourOptions no;
     no.k = g.neighbours.k();
-    Neighbourhoods cn = nearestNeighbours(grid.points, no);
+    Neighbourhoods cn = nearestNeighbours(grid.points, no, progress.part(0.0, 0.15));
     const double coarseSpacing = meanSpacing(cn);
-    auto coarse = std::make_shared<RegionGeometry>(analyseRegion(
-        grid.points, std::move(cn), NormalMatrix(), g.region, coarseSpacing, coarseOptions));
+    auto coarse = std::make_shared<RegionGeometry>(
+        analyseRegion(grid.points, std::move(cn), NormalMatrix(), g.region, coarseSpacing,
+                      coarseOptions, progress.part(0.15, 1.0)));
     fillRimFromInterior(*coarse, coarseOptions.scales.rimWidth * coarseSpacing);
     return coarse;
 }
 
 /// The coarse scales (2, 4, ... spacings) weighed in turn, each trial added to g.scaleTrials,
 /// until the largest visible radius covers the region (extent) or too few cells are left.
+/// Each scale has about a quarter of the points of the one before: the first is told as half
+/// of `progress`, the next as half of the rest, and so on.
 CoarseScale weighCoarseScales(const PointMatrix& raw, double extent, RegionGeometry& g,
-                              const SmoothEdgeOptions& options)
+                              const SmoothEdgeOptions& options, const ProgressSpan& progress)
 {
     const CurvatureScaleOptions& so = options.scales;
     const SmoothEdgeOptions coarseOptions = coarseScaleOptions(options);
     CoarseScale best;
+    double told = 0.0;
     for (double s = 2.0; s <= so.maxScale; s *= 2.0) {
+        const ProgressSpan trial = progress.part(told, 0.5 * (1.0 + told));
+        told = 0.5 * (1.0 + told);
         // A coarser scale is an offer, not a stage: one that cannot be analysed (too few or
         // degenerate cells) ends the trials and the region keeps what it has.
         try {
@@ -362,8 +372,11 @@ CoarseScale weighCoarseScales(const PointMatrix& raw, double extent, RegionGeome
             if (cells < std::max<Eigen::Index>(so.minPoints, g.neighbours.k() + 1)) {
                 break;
             }
-            const std::shared_ptr<RegionGeometry> coarse = coarseGeometry(grid, g, coarseOptions);
+            trial.report(0.1);
+            const std::shared_ptr<RegionGeometry> coarse =
+                coarseGeometry(grid, g, coarseOptions, trial.part(0.1, 0.8));
             g.scaleTrials.push_back(weighScale(*coarse, g.spacing, coarseOptions));
+            trial.report(1.0);
             // The finer of two coarse scales on a tie.
             if (g.scaleTrials.back().acceptedThresholds > best.acceptedThresholds) {
                 best.acceptedThresholds = g.scaleTrials.back().acceptedThresholds;
@@ -390,7 +403,7 @@ CoarseScale weighCoarseScales(const PointMatrix& raw, double extent, RegionGeome
 /// resolves smaller fillets and places the lines more closely). Its curvature is carried back
 /// to the region's points, where the labels, clusters and lines are drawn as at scale 1.
 void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members, RegionGeometry& g,
-                          const SmoothEdgeOptions& options)
+                          const SmoothEdgeOptions& options, const ProgressSpan& progress)
 {
     const CurvatureScaleOptions& so = options.scales;
     requireScaleOptions(so);
@@ -417,11 +430,12 @@ void chooseCurvatureScale(const PointMatrix& P, const std::vector<int>& members,
     own.points = static_cast<int>(m);
     own.noise = g.noise;
     g.scaleTrials.push_back(own);
-    CoarseScale chosen = weighCoarseScales(raw, extent, g, options);
+    CoarseScale chosen = weighCoarseScales(raw, extent, g, options, progress.part(0.0, 0.7));
     if (!chosen.geometry) {
         return;
     }
     g.scaleTrials.front() = weighScale(g, g.spacing, coarseScaleOptions(options));
+    progress.report(0.9);
     if (g.scaleTrials.front().acceptedThresholds >= chosen.acceptedThresholds) {
         return;
     }
@@ -473,10 +487,12 @@ void requireRegionInputs(const PointMatrix& P, const NormalMatrix& normals,
 
 /// The rest of analyseRegion once the region's points, neighbourhoods and normals are in g:
 /// noise, smoothing, 1-rings, curvature, its noise floor and scale.
+/// `progress` is told in shares measured on noisy clouds of a million points.
 void analyseRegionGeometry(const PointMatrix& P, RegionGeometry& g,
-                           const SmoothEdgeOptions& options)
+                           const SmoothEdgeOptions& options, const ProgressSpan& progress)
 {
     g.noise = estimateNoise(g.points, g.normals, g.neighbours, g.spacing, options.noiseSamples);
+    progress.report(0.05);
     g.smoothed =
         options.smoothing == SmoothingMode::Always ||
         (options.smoothing == SmoothingMode::Automatic && g.noise > options.noiseThreshold);
@@ -484,31 +500,34 @@ void analyseRegionGeometry(const PointMatrix& P, RegionGeometry& g,
         // Sec. 2.4: smoothing inside the region only, after the sharp edges are found, so it
         // cannot round them off.
         g.points = laplacianSmooth(g.points, g.neighbours, allIndices(g.points.rows()),
-                                   options.smoothingOptions);
-        g.normals = pcaNormals(g.points, g.neighbours).normals;
+                                   options.smoothingOptions, progress.part(0.05, 0.25));
+        g.normals = pcaNormals(g.points, g.neighbours, {}, progress.part(0.25, 0.3)).normals;
     }
-    g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours);
-    g.curvature =
-        regionCurvature(g.points, g.normals, g.neighbours,
-                        g.smoothed ? options.curvatureAveragingPasses : 0, options.curvature);
+    g.ring = ringNeighbourhoods(g.points, g.normals, g.neighbours, {}, progress.part(0.3, 0.35));
+    g.curvature = regionCurvature(g.points, g.normals, g.neighbours,
+                                  g.smoothed ? options.curvatureAveragingPasses : 0,
+                                  options.curvature, progress.part(0.35, 0.45));
     g.curvatureNoise =
         curvatureNoiseFloor(g.noise, g.neighbours.k(), g.smoothed, options) / g.spacing;
-    chooseCurvatureScale(P, g.members, g, options);
+    progress.report(0.47);
+    chooseCurvatureScale(P, g.members, g, options, progress.part(0.47, 1.0));
 }
 
 } // namespace
 
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
-                             int regionId, double spacing, const SmoothEdgeOptions& options)
+                             int regionId, double spacing, const SmoothEdgeOptions& options,
+                             const ProgressSpan& progress)
 {
-    return analyseRegion(P, N, NormalMatrix(), region, members, regionId, spacing, options);
+    return analyseRegion(P, N, NormalMatrix(), region, members, regionId, spacing, options,
+                         progress);
 }
 
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const NormalMatrix& normals, const std::vector<int>& region,
                              const std::vector<int>& members, int regionId, double spacing,
-                             const SmoothEdgeOptions& options)
+                             const SmoothEdgeOptions& options, const ProgressSpan& progress)
 {
     requireRegionInputs(P, normals, options);
     if (members.size() <= static_cast<size_t>(N.k())) {
@@ -528,7 +547,7 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         g.points.row(i) = P.row(members[static_cast<size_t>(i)]);
     }
     if (normals.rows() == 0) {
-        g.normals = pcaNormals(g.points, g.neighbours).normals;
+        g.normals = pcaNormals(g.points, g.neighbours, {}, progress.part(0.0, 0.1)).normals;
     } else {
         // A row of the region whose neighbours are all in the region is the cloud's row, its
         // fit the cloud's fit.
@@ -550,12 +569,14 @@ RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
         }
         pcaNormalsOfRows(g.points, g.neighbours, cutRows, g.normals);
     }
-    analyseRegionGeometry(P, g, options);
+    progress.report(0.1);
+    analyseRegionGeometry(P, g, options, progress.part(0.1, 1.0));
     return g;
 }
 
 RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
-                             int regionId, double spacing, const SmoothEdgeOptions& options)
+                             int regionId, double spacing, const SmoothEdgeOptions& options,
+                             const ProgressSpan& progress)
 {
     requireRegionInputs(P, normals, options);
     if (N.size() != P.rows() || P.rows() <= N.k()) {
@@ -571,8 +592,10 @@ RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const Nor
     g.neighbours = std::move(N);
     g.points = P;
     // Every neighbour is in the region: the cloud's normals are the region's.
-    g.normals = normals.rows() == 0 ? pcaNormals(g.points, g.neighbours).normals : normals;
-    analyseRegionGeometry(P, g, options);
+    g.normals = normals.rows() == 0
+                    ? pcaNormals(g.points, g.neighbours, {}, progress.part(0.0, 0.1)).normals
+                    : normals;
+    analyseRegionGeometry(P, g, options, progress.part(0.1, 1.0));
     return g;
 }
 

@@ -11,6 +11,7 @@
 #include "FeatureLines/PointCloud.h"
 #include "FeatureLines/neighbourhoods/RingNeighbourhood.h"
 #include "FeatureLines/smooth/SmoothEdgeOptions.h"
+#include "FeatureLines/support/Progress.h"
 
 namespace featurelines {
 
@@ -61,21 +62,25 @@ struct RegionGeometry
 /// Builds a region's geometry from the cloud's.
 ///   P, N        the cloud and its k nearest neighbours
 ///   region      #P region of every point (-1: none), members: the points of regionId
+///   progress    told as the steps and their loops go (each overload)
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const std::vector<int>& region, const std::vector<int>& members,
-                             int regionId, double spacing, const SmoothEdgeOptions& options = {});
+                             int regionId, double spacing, const SmoothEdgeOptions& options = {},
+                             const ProgressSpan& progress = {});
 
 /// The same, given the cloud's normals over N (pcaNormals): only the points whose neighbourhood
 /// the region cuts are fitted again.
 RegionGeometry analyseRegion(const PointMatrix& P, const Neighbourhoods& N,
                              const NormalMatrix& normals, const std::vector<int>& region,
                              const std::vector<int>& members, int regionId, double spacing,
-                             const SmoothEdgeOptions& options = {});
+                             const SmoothEdgeOptions& options = {},
+                             const ProgressSpan& progress = {});
 
 /// The same for a region of every point of P, taking over P's neighbourhoods N (the region's
 /// own). normals may be empty (fitted here).
 RegionGeometry analyseRegion(const PointMatrix& P, Neighbourhoods&& N, const NormalMatrix& normals,
-                             int regionId, double spacing, const SmoothEdgeOptions& options = {});
+                             int regionId, double spacing, const SmoothEdgeOptions& options = {},
+                             const ProgressSpan& progress = {});
 
 /// The noise (x spacing): the median distance of a point from the quadric fitted to its
 /// neighbours, about 0.9 sigma for normal noise sigma, whatever the curvature. At most

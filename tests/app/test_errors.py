@@ -127,7 +127,7 @@ class DocumentObjectErrorTest(unittest.TestCase):
 
         def observer(done, stage):
             stages.append(stage)
-            return done < 0.45  # stop once the sharp edges are under way
+            return done < 0.25  # stop once the sharp edges are under way
 
         FeatureLines.setProgressObserver(observer)
         lines.GrowAngle = 28  # a Regions-stage change: the sharp edges are searched again

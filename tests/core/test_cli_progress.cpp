@@ -39,7 +39,7 @@ TEST(CliProgress, LinesModeWritesOneLinePerStageAndAClosingLine)
     std::ostringstream out;
     ProgressReport report(out, "c.xyz", false);
     report(0.0, "neighbours");
-    report(0.1, "neighbours"); // same stage, under 5 s later: no line
+    report(0.1, "neighbours"); // same stage, under a second later: no line
     report(0.3, "normals");
     report(1.0, "done"); // the closing line says it
     report.finish();
