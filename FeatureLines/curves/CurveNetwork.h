@@ -96,9 +96,22 @@ struct PatchBorder
 
 struct CurveFitOptions
 {
-    /// The fitting tolerance in point spacings (ExtractionResult::spacing), raised to twice the
-    /// noise estimated from the polyline's scatter where that is larger.
+    /// The fitting tolerance in point spacings (ExtractionResult::spacing): every polyline
+    /// vertex within it of its curve. Raised to noiseFactor times the noise where that is
+    /// larger: the cloud's (the median of RegionReport::noise) or the polyline's own scatter
+    /// (polylineScatter in CurveFit.h).
     double tolerance = 0.25;
+    /// Multiple of the noise the tolerance is raised to (default 6).
+    double noiseFactor = 6.0;
+    /// A free line end within this many spacings of a vertex or of another line is joined to
+    /// it there (default 2).
+    double joinDistance = 2.0;
+    /// Polyline vertices within this many spacings of an edge's end vertex are left out of its
+    /// fit: the lines bend on their last spacing or two into a junction (default 2).
+    double vertexGap = 2.0;
+    /// Two edges meeting alone at a vertex whose direction turns there by less than this many
+    /// degrees run on with one tangent (default 30).
+    double smoothAngle = 30.0;
 };
 
 /// The network of fitted curves of `result`'s lines.
