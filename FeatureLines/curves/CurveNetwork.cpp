@@ -75,6 +75,15 @@ LinePoint nearestOnLine(const FeatureLine& l, const Vec3& p)
     return best;
 }
 
+double polylineLength(const PointMatrix& P)
+{
+    double s = 0.0;
+    for (Eigen::Index i = 0; i + 1 < P.rows(); ++i) {
+        s += (P.row(i + 1) - P.row(i)).norm();
+    }
+    return s;
+}
+
 /// Length along the open line from its vertex 0 to the given place.
 double lengthTo(const FeatureLine& l, int segment, double t)
 {
@@ -92,8 +101,8 @@ double lengthTo(const FeatureLine& l, int segment, double t)
 class NetworkBuilder
 {
 public:
-    NetworkBuilder(const ExtractionResult& result, double join)
-        : result_(result), join_(join), splits_(result.lines.size()),
+    NetworkBuilder(const ExtractionResult& result, double join, double merge)
+        : result_(result), join_(join), merge_(merge), splits_(result.lines.size()),
           junctionVertex_(static_cast<size_t>(result.junctions.rows()), -1)
     {
     }
@@ -159,6 +168,10 @@ public:
                 e.startVertex = a.vertex;
                 e.endVertex = b.vertex;
                 e.points = piecePoints(line, a, b, k + 1 == cuts.size(), minimumGap);
+                if (e.startVertex == e.endVertex && !freeLoop(static_cast<int>(l)) &&
+                    polylineLength(e.points) <= 2 * join_) {
+                    continue; // a piece from a vertex back to it, shorter than a join: none
+                }
                 out.push_back(std::move(e));
             }
         }
@@ -186,11 +199,20 @@ private:
         return static_cast<int>(vertices.size()) - 1;
     }
 
+    /// The vertex of junction j: a junction within mergeDistance of one met before shares its
+    /// vertex (the crease placement can put two junctions of one corner on the same spot).
     int junctionVertex(int j)
     {
         int& v = junctionVertex_[static_cast<size_t>(j)];
         if (v < 0) {
-            v = newVertex(result_.junctions.row(j).transpose());
+            const Vec3 p = result_.junctions.row(j).transpose();
+            for (int other : junctionVertex_) {
+                if (other >= 0 && (vertices[static_cast<size_t>(other)] - p).norm() <= merge_) {
+                    v = other;
+                    return v;
+                }
+            }
+            v = newVertex(p);
         }
         return v;
     }
@@ -286,6 +308,7 @@ private:
 
     const ExtractionResult& result_;
     double join_;
+    double merge_;
     std::vector<std::vector<Split>> splits_;
     std::vector<int> junctionVertex_;
     std::vector<int> loopVertexFree_;
@@ -398,7 +421,7 @@ void joinTangents(CurveNetwork& net, std::vector<CurveFitInput>& inputs, double 
 CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options)
 {
     if (!(options.tolerance > 0) || !(options.noiseFactor >= 0) || !(options.joinDistance >= 0) ||
-        !(options.vertexGap >= 0) || !(options.smoothAngle >= 0)) {
+        !(options.vertexGap >= 0) || !(options.mergeDistance >= 0) || !(options.smoothAngle >= 0)) {
         throw std::invalid_argument("the curve fitting options must be positive numbers");
     }
     CurveNetwork net;
@@ -410,7 +433,7 @@ CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptio
         throw std::invalid_argument("the extraction result has no point spacing");
     }
     const double spacing = result.spacing;
-    NetworkBuilder builder(result, options.joinDistance * spacing);
+    NetworkBuilder builder(result, options.joinDistance * spacing, options.mergeDistance * spacing);
     builder.cutLines();
     net.edges = builder.edges(options.vertexGap * spacing);
     net.vertices.resize(static_cast<Eigen::Index>(builder.vertices.size()), 3);

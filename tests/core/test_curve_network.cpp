@@ -58,15 +58,60 @@ void expectBoxNetwork(const CurveNetwork& net, double edge, double spacing, doub
     expectCurvesOnVertices(net);
 }
 
+/// Every loop runs end to start through shared vertices and closes.
+void expectLoopsChain(const CurveNetwork& net, const PatchBorder& b)
+{
+    for (const std::vector<LoopEdge>& loop : b.loops) {
+        ASSERT_FALSE(loop.empty());
+        for (size_t k = 0; k < loop.size(); ++k) {
+            const NetworkEdge& a = net.edges[static_cast<size_t>(loop[k].edge)];
+            const NetworkEdge& c = net.edges[static_cast<size_t>(loop[(k + 1) % loop.size()].edge)];
+            const int aEnd = loop[k].reversed ? a.startVertex : a.endVertex;
+            const int cStart = loop[(k + 1) % loop.size()].reversed ? c.endVertex : c.startVertex;
+            EXPECT_EQ(aEnd, cStart) << "patch " << b.patch << " loop edge " << k;
+        }
+    }
+}
+
 } // namespace
 
-TEST(CurveNetwork, ABoxGivesTwelveSegmentsOnEightSharedCorners)
+TEST(CurveNetwork, ABoxGivesTwelveSegmentsOnEightSharedCornersAndSixClosedFaceBorders)
 {
     const double edge = 20.0, h = 0.5;
     const shapes::Sample cube = shapes::cube(edge, h, 11);
     const ExtractionResult r = extractFeatureLines(cube.points);
     const CurveNetwork net = fitCurveNetwork(r);
     expectBoxNetwork(net, edge, r.spacing, 1.5);
+    const std::vector<PatchBorder> borders = patchBorders(net, r, cube.points);
+    ASSERT_EQ(borders.size(), 6u);
+    std::map<int, int> patchesOfEdge;
+    for (const PatchBorder& b : borders) {
+        EXPECT_TRUE(b.closed()) << "patch " << b.patch;
+        ASSERT_EQ(b.loops.size(), 1u);
+        EXPECT_EQ(b.loops[0].size(), 4u);
+        expectLoopsChain(net, b);
+        // The four edges of the face the patch is: its points' face is the one whose axis
+        // coordinate every edge shares.
+        int face = -1;
+        for (size_t i = 0; i < cube.part.size(); ++i) {
+            if (r.patch[i] == b.patch) {
+                face = cube.part[i];
+                break;
+            }
+        }
+        const int axis = face / 2;
+        const double side = face % 2 ? -edge / 2 : edge / 2;
+        for (const LoopEdge& le : b.loops[0]) {
+            const NetworkEdge& e = net.edges[static_cast<size_t>(le.edge)];
+            EXPECT_NEAR(e.curve.start[axis], side, 1.5 * r.spacing);
+            EXPECT_NEAR(e.curve.end[axis], side, 1.5 * r.spacing);
+            ++patchesOfEdge[le.edge];
+        }
+    }
+    ASSERT_EQ(patchesOfEdge.size(), 12u);
+    for (const auto& [e, n] : patchesOfEdge) {
+        EXPECT_EQ(n, 2) << "every edge borders two faces";
+    }
 }
 
 TEST(CurveNetwork, ANoisyBoxStillGivesTwelveSegments)
@@ -110,9 +155,21 @@ PointMatrix closedCylinder(double radius, double height, double h, unsigned seed
 TEST(CurveNetwork, AClosedCylindersRimsAreCirclesOfItsRadiusAboutItsAxis)
 {
     const double radius = 10.0, height = 16.0, h = 0.5;
-    const ExtractionResult r = extractFeatureLines(closedCylinder(radius, height, h, 21));
+    const PointMatrix P = closedCylinder(radius, height, h, 21);
+    const ExtractionResult r = extractFeatureLines(P);
     const CurveNetwork net = fitCurveNetwork(r);
     ASSERT_EQ(net.edges.size(), 2u);
+    // Three patches: the side, bordered by both rims (the longer first; equal here), and
+    // each cap by its own rim.
+    const std::vector<PatchBorder> borders = patchBorders(net, r, P);
+    ASSERT_EQ(borders.size(), 3u);
+    int loops = 0;
+    for (const PatchBorder& b : borders) {
+        EXPECT_TRUE(b.closed());
+        loops += static_cast<int>(b.loops.size());
+        expectLoopsChain(net, b);
+    }
+    EXPECT_EQ(loops, 4);
     std::vector<double> heights;
     for (const NetworkEdge& e : net.edges) {
         ASSERT_EQ(e.curve.kind, CurveKind::Circle);
@@ -154,4 +211,14 @@ TEST(CurveNetwork, ARoundedCubesFilletBordersAreAFewSmoothCurves)
         }
     }
     expectCurvesOnVertices(net);
+    // Every patch closed: the faces and corners by one loop each, the fillets between them
+    // by all fourteen.
+    const std::vector<PatchBorder> borders = patchBorders(net, r, s.points);
+    int loops = 0;
+    for (const PatchBorder& b : borders) {
+        EXPECT_TRUE(b.closed()) << "patch " << b.patch;
+        loops += static_cast<int>(b.loops.size());
+        expectLoopsChain(net, b);
+    }
+    EXPECT_EQ(loops, 28);
 }
