@@ -140,6 +140,11 @@ void addBorders(NetworkOutputs& out, const CurveNetwork& network,
     }
 }
 
+/// A fitted curve farther than this many point spacings from its polyline anywhere is a failed
+/// fit (an oscillating B-spline can pass every polyline vertex and loop out between them); the
+/// core fits within 0.25 spacing, or three times the noise.
+constexpr double maxStray = 2.0;
+
 } // namespace
 
 gp_Trsf toTrsf(const Base::Matrix4D& m)
@@ -168,7 +173,7 @@ NetworkOutputs makeNetworkOutputs(const ExtractionResult& result, const PointMat
         return out;
     }
     const featurelines::cad::NetworkShapes shapes =
-        featurelines::cad::makeNetworkShapes(network, toTrsf(toWorld));
+        featurelines::cad::makeNetworkShapes(network, toTrsf(toWorld), maxStray * result.spacing);
     out.curveProblems = shapes.problems;
     out.wires = fittedWires(lines, network, shapes, toWorld, out.curveProblems);
     out.curveKinds = curveKindsOf(out.wires, network, shapes);

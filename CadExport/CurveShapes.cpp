@@ -7,6 +7,8 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
+#include <GCPnts_QuasiUniformAbscissa.hxx>
+#include <GeomAdaptor_Curve.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Line.hxx>
@@ -19,6 +21,7 @@
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -117,6 +120,15 @@ void requireEnds(const CurveSpan& span, const gp_Pnt& start, const gp_Pnt& end)
     }
 }
 
+/// Distance from p to the segment ab.
+double distanceToSegment(const gp_Pnt& p, const gp_Pnt& a, const gp_Pnt& b)
+{
+    const gp_Vec ab(a, b), ap(a, p);
+    const double length2 = ab.SquareMagnitude();
+    const double t = length2 > 0.0 ? std::clamp(ap.Dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return p.Distance(a.Translated(t * ab));
+}
+
 TopoDS_Edge edgeOn(const CurveSpan& span, const TopoDS_Vertex& v1, const TopoDS_Vertex& v2)
 {
     BRepBuilderAPI_MakeEdge make(span.curve, v1, v2, span.first, span.last);
@@ -170,6 +182,48 @@ CurveSpan makeCurve(const FittedCurve& c)
     throw std::invalid_argument("a curve of unknown kind " + std::to_string(int(c.kind)));
 }
 
+double strayFromPolyline(const CurveSpan& span, const PointMatrix& points)
+{
+    const Eigen::Index n = points.rows();
+    if (n == 0) {
+        return 0.0;
+    }
+    // Evenly along the curve's length, not its parameter: a B-spline whose fit went wrong can
+    // loop far out over a tiny parameter range between two close knots.
+    const int samples = static_cast<int>(std::max<Eigen::Index>(64, 4 * n));
+    const GeomAdaptor_Curve curve(span.curve, span.first, span.last);
+    GCPnts_QuasiUniformAbscissa along(curve, samples + 1, span.first, span.last);
+    if (!along.IsDone()) {
+        throw std::invalid_argument("its length cannot be measured");
+    }
+    std::vector<double> parameters;
+    for (int i = 1; i <= along.NbPoints(); ++i) {
+        parameters.push_back(along.Parameter(i));
+    }
+    // And inside every knot span of a B-spline, however short: measuring the length can step
+    // over a spike in a span of 1e-20.
+    if (auto bspline = Handle(Geom_BSplineCurve)::DownCast(span.curve)) {
+        for (int k = 1; k < bspline->NbKnots(); ++k) {
+            const double a = std::max(bspline->Knot(k), span.first);
+            const double b = std::min(bspline->Knot(k + 1), span.last);
+            for (int j = 1; j < 4 && a < b; ++j) {
+                parameters.push_back(a + (b - a) * j / 4.0);
+            }
+        }
+    }
+    double stray = 0.0;
+    for (double t : parameters) {
+        const gp_Pnt p = span.curve->Value(t);
+        double nearest = p.Distance(pointOf(points, 0));
+        for (Eigen::Index j = 1; j < n; ++j) {
+            nearest =
+                std::min(nearest, distanceToSegment(p, pointOf(points, j - 1), pointOf(points, j)));
+        }
+        stray = std::max(stray, nearest);
+    }
+    return stray;
+}
+
 CurveSpan makePolylineCurve(const PointMatrix& points)
 {
     std::vector<gp_Pnt> kept;
@@ -198,7 +252,8 @@ CurveSpan makePolylineCurve(const PointMatrix& points)
     return {curve, 0.0, along};
 }
 
-NetworkShapes makeNetworkShapes(const CurveNetwork& network, const gp_Trsf& toWorld)
+NetworkShapes makeNetworkShapes(const CurveNetwork& network, const gp_Trsf& toWorld,
+                                double maxStray)
 {
     NetworkShapes out;
     std::vector<gp_Pnt> positions;
@@ -226,6 +281,14 @@ NetworkShapes makeNetworkShapes(const CurveNetwork& network, const gp_Trsf& toWo
         try {
             const CurveSpan span = makeCurve(edge.curve);
             requireEnds(span, p1, p2);
+            if (maxStray > 0.0) {
+                const double stray = strayFromPolyline(span, polylineBetween(edge, p1, p2));
+                if (stray > maxStray) {
+                    throw std::invalid_argument("it strays " + std::to_string(stray) +
+                                                " from its points (more than " +
+                                                std::to_string(maxStray) + ")");
+                }
+            }
             out.edges.back() = edgeOn(span, v1, v2);
             continue;
         } catch (const std::invalid_argument& error) {

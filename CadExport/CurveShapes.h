@@ -40,8 +40,16 @@ CurveSpan makeCurve(const FittedCurve& curve);
 /// Throws std::invalid_argument when fewer than two distinct vertices are left.
 CurveSpan makePolylineCurve(const PointMatrix& points);
 
+/// The farthest a point of the curve lies from the polyline V  #V by 3 (the curve sampled
+/// evenly along its length, 4 points per polyline vertex, at least 64, and 3 points inside
+/// every knot span of a B-spline). Throws
+/// std::invalid_argument when OpenCASCADE cannot sample it.
+double strayFromPolyline(const CurveSpan& span, const PointMatrix& points);
+
 /// The network's shapes, in world coordinates (`toWorld`: a rigid motion from the network's
-/// coordinates). vertices[i] is network vertex i, edges[e] network edge e.
+/// coordinates). vertices[i] is network vertex i, edges[e] network edge e. A fitted curve that
+/// strays farther than `maxStray` (network units; 0: no check) from the polyline it was fitted
+/// to is a failed fit, drawn as the polyline.
 struct NetworkShapes
 {
     std::vector<TopoDS_Vertex> vertices;
@@ -53,7 +61,8 @@ struct NetworkShapes
     /// One line per edge that fell back to its polyline or was left out, naming it and why.
     std::vector<std::string> problems;
 };
-NetworkShapes makeNetworkShapes(const CurveNetwork& network, const gp_Trsf& toWorld = gp_Trsf());
+NetworkShapes makeNetworkShapes(const CurveNetwork& network, const gp_Trsf& toWorld = gp_Trsf(),
+                                double maxStray = 0.0);
 
 /// One patch's border as wires of the network's edges.
 struct BorderWires

@@ -185,7 +185,9 @@ int runExtract(const Arguments& a)
     const PointMatrix P = cli::readInput(input, stdinFormat);
     const ExtractionResult result = extractFeatureLines(P, options);
     const CurveNetwork network = fitCurveNetwork(result, fit);
-    const NetworkShapes shapes = makeNetworkShapes(network);
+    // As the FreeCAD module: a curve straying more than 2 spacings from its points is a failed
+    // fit, written as its polyline.
+    const NetworkShapes shapes = makeNetworkShapes(network, gp_Trsf(), 2.0 * result.spacing);
     std::vector<BorderWires> borders;
     int closed = 0;
     for (const PatchBorder& border : patchBorders(network, result, P)) {

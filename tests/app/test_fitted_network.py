@@ -197,6 +197,37 @@ class CylinderTest(unittest.TestCase):
             support.close_document(doc)
 
 
+class RoundedCubeTest(unittest.TestCase):
+    def test_fillet_borders_are_closed_curves_on_the_part(self):
+        edge, radius = 40.0, 6.0
+        doc = support.new_document("FittedRoundedCube")
+        try:
+            _, lines = support.add_extraction(
+                doc, sampled_shapes.rounded_cube(edge, radius, SPACING, 6))
+            self.assertEqual(support.error_message(lines), "")
+            wires = lines.SmoothWires.Wires
+            self.assertEqual(len(wires), 14, "8 corner loops and 6 face loops")
+            inner = edge / 2 - radius
+            for wire in wires:
+                self.assertTrue(wire.isClosed())
+                # A loop meeting no other line is one closed edge on one vertex.
+                self.assertEqual(len(wire.Edges), 1)
+                self.assertEqual(len(wire.Vertexes), 1)
+                # On the rounded cube's border between face and fillet or fillet and corner.
+                for p in wire.discretize(400):
+                    a = sorted(abs(c) for c in (p.x, p.y, p.z))
+                    self.assertLess(a[2], edge / 2 + SPACING)
+                    self.assertGreater(a[2], inner - SPACING)
+            # A curve that strays from its points (a B-spline looping out between two close
+            # knots) is drawn as its polyline and said so: no wire leaves the part (above).
+            kinds = list(lines.CurveKinds)
+            fallbacks = [p for p in lines.CurveProblems if "is its polyline" in p]
+            self.assertEqual(kinds.count("polyline"), len(fallbacks), fallbacks)
+            self.assertGreaterEqual(kinds.count("bspline"), 12, kinds)
+        finally:
+            support.close_document(doc)
+
+
 class CommandLineToolTest(unittest.TestCase):
     """featurelines-cad (FEATURELINES_CAD_TOOL) on the box's cloud, its files read by Part."""
 

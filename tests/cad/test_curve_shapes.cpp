@@ -270,3 +270,33 @@ TEST(CurveShapes, TheNetworkMovesToTheWorldWithItsVerticesStillShared)
     EXPECT_TRUE(TopExp::LastVertex(shapes.edges[0]).IsSame(TopExp::FirstVertex(shapes.edges[1])));
     EXPECT_EQ(countOf(makeEdgeCompound(shapes), TopAbs_VERTEX), 4);
 }
+
+TEST(CurveShapes, ACurveStrayingFromItsPointsIsAFailedFit)
+{
+    CurveNetwork n;
+    n.vertices.resize(2, 3);
+    n.vertices << 0, 0, 0, 4, 0, 0;
+    // Through both vertices, but bulging 7.5 away from the straight points between them.
+    FittedCurve bulge;
+    bulge.kind = CurveKind::BSpline;
+    bulge.start = {0, 0, 0};
+    bulge.end = {4, 0, 0};
+    bulge.poles.resize(4, 3);
+    bulge.poles << 0, 0, 0, 1, 10, 0, 3, 10, 0, 4, 0, 0;
+    bulge.knots = {0.0, 1.0};
+    bulge.multiplicities = {4, 4};
+    NetworkEdge e = edgeOf(0, 1, bulge, n.vertices);
+    e.points.resize(3, 3);
+    e.points << 0, 0, 0, 2, 0, 0, 4, 0, 0;
+    n.edges = {e};
+    EXPECT_NEAR(strayFromPolyline(makeCurve(bulge), e.points), 7.5, 1e-9) << "at t = 1/2";
+
+    const NetworkShapes unchecked = makeNetworkShapes(n);
+    EXPECT_FALSE(unchecked.polyline[0]);
+    const NetworkShapes checked = makeNetworkShapes(n, gp_Trsf(), 1.0);
+    ASSERT_TRUE(checked.polyline[0]);
+    EXPECT_NEAR(lengthOf(checked.edges[0]), 4.0, 1e-12);
+    ASSERT_EQ(checked.problems.size(), 1u);
+    EXPECT_EQ(checked.problems[0], "edge 0 (line -1, bspline) is its polyline: it strays 7.500000 "
+                                   "from its points (more than 1.000000)");
+}
