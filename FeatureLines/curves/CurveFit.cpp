@@ -46,6 +46,23 @@ void setDeviations(FittedCurve& c, const Eigen::VectorXd& distances)
         distances.size() ? std::sqrt(distances.squaredNorm() / double(distances.size())) : 0.0;
 }
 
+/// The segment, arc or circle c with its deviations from the points P (`distance` of a point
+/// to it), when it holds the tolerance (analyticHolds).
+template <class Distance>
+std::optional<FittedCurve> ifItHolds(FittedCurve c, const PointMatrix& P, double tolerance,
+                                     Distance distance)
+{
+    Eigen::VectorXd d(P.rows());
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        d[i] = distance(row(P, i));
+    }
+    setDeviations(c, d);
+    if (!analyticHolds(c, tolerance)) {
+        return std::nullopt;
+    }
+    return c;
+}
+
 /// A unit vector perpendicular to the unit vector n.
 Vec3 anyPerpendicular(const Vec3& n)
 {
@@ -447,15 +464,8 @@ std::optional<FittedCurve> fitSegment(const CurveFitInput& in)
     if (c.end == c.start) {
         return std::nullopt;
     }
-    Eigen::VectorXd d(P.rows());
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        d[i] = distanceToSegment(row(P, i), c.start, c.end);
-    }
-    setDeviations(c, d);
-    if (!analyticHolds(c, in.tolerance)) {
-        return std::nullopt;
-    }
-    return c;
+    return ifItHolds(c, P, in.tolerance,
+                     [&](const Vec3& p) { return distanceToSegment(p, c.start, c.end); });
 }
 
 std::optional<FittedCurve> fitArc(const CurveFitInput& in)
@@ -517,15 +527,7 @@ std::optional<FittedCurve> fitArc(const CurveFitInput& in)
     c.radius = std::sqrt(half * half + t * t);
     c.axis = n;
     c.axis *= turningSense(P, c.centre, c.axis);
-    Eigen::VectorXd d(P.rows());
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        d[i] = distanceToArc(row(P, i), c);
-    }
-    setDeviations(c, d);
-    if (!analyticHolds(c, in.tolerance)) {
-        return std::nullopt;
-    }
-    return c;
+    return ifItHolds(c, P, in.tolerance, [&](const Vec3& p) { return distanceToArc(p, c); });
 }
 
 std::optional<FittedCurve> fitCircle(const CurveFitInput& in)
@@ -581,15 +583,9 @@ std::optional<FittedCurve> fitCircle(const CurveFitInput& in)
         return std::nullopt;
     }
     c.start = c.end = c.centre + c.radius * radial.normalized();
-    Eigen::VectorXd d(P.rows());
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        d[i] = distanceToCircle(row(P, i), c.centre, c.axis, c.radius);
-    }
-    setDeviations(c, d);
-    if (!analyticHolds(c, in.tolerance)) {
-        return std::nullopt;
-    }
-    return c;
+    return ifItHolds(c, P, in.tolerance, [&](const Vec3& p) {
+        return distanceToCircle(p, c.centre, c.axis, c.radius);
+    });
 }
 
 FittedCurve fitBSpline(const CurveFitInput& in)
@@ -717,6 +713,23 @@ Vec3 curveTangent(const FittedCurve& c, double s)
     return (curvePoint(c, b) - curvePoint(c, a)).normalized();
 }
 
+namespace {
+
+/// The length of the polygon through the curve's points at n equal parameter steps.
+double polygonLength(const FittedCurve& c, int n)
+{
+    double length = 0.0;
+    Vec3 previous = curvePoint(c, 0.0);
+    for (int i = 1; i <= n; ++i) {
+        const Vec3 q = curvePoint(c, double(i) / n);
+        length += (q - previous).norm();
+        previous = q;
+    }
+    return length;
+}
+
+} // namespace
+
 PointMatrix sampleCurve(const FittedCurve& c, double step)
 {
     if (!(step > 0)) {
@@ -729,16 +742,9 @@ PointMatrix sampleCurve(const FittedCurve& c, double step)
         return S;
     }
     // The length from a fine sampling, then as many equal parameter steps as the step asks.
-    const int fine = c.kind == CurveKind::BSpline
-                         ? std::max<int>(64, 16 * static_cast<int>(c.poles.rows()))
-                         : 256;
-    double length = 0.0;
-    Vec3 previous = curvePoint(c, 0.0);
-    for (int i = 1; i <= fine; ++i) {
-        const Vec3 q = curvePoint(c, double(i) / fine);
-        length += (q - previous).norm();
-        previous = q;
-    }
+    const double length = polygonLength(
+        c, c.kind == CurveKind::BSpline ? std::max<int>(64, 16 * static_cast<int>(c.poles.rows()))
+                                        : 256);
     const int segments = std::clamp(static_cast<int>(std::ceil(length / step)), 1, 1000000);
     PointMatrix S(segments + 1, 3);
     for (int i = 0; i <= segments; ++i) {
@@ -752,17 +758,9 @@ double curveLength(const FittedCurve& c)
     if (c.kind == CurveKind::Segment) {
         return (c.end - c.start).norm();
     }
-    const int n = c.kind == CurveKind::BSpline
-                      ? std::max<int>(1024, 64 * static_cast<int>(c.poles.rows()))
-                      : 1024;
-    double length = 0.0;
-    Vec3 previous = curvePoint(c, 0.0);
-    for (int i = 1; i <= n; ++i) {
-        const Vec3 q = curvePoint(c, double(i) / n);
-        length += (q - previous).norm();
-        previous = q;
-    }
-    return length;
+    return polygonLength(c, c.kind == CurveKind::BSpline
+                                ? std::max<int>(1024, 64 * static_cast<int>(c.poles.rows()))
+                                : 1024);
 }
 
 Eigen::VectorXd distancesToCurve(const FittedCurve& c, const PointMatrix& P, double step)

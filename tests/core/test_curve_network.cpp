@@ -222,3 +222,75 @@ TEST(CurveNetwork, ARoundedCubesFilletBordersAreAFewSmoothCurves)
     }
     EXPECT_EQ(loops, 28);
 }
+
+namespace {
+
+/// An open line of n points along f(t) for t in [a, b], free ends.
+template <typename F> FeatureLine openLine(F f, double a, double b, int n)
+{
+    FeatureLine l;
+    l.type = LineType::Smooth;
+    l.points.resize(n, 3);
+    for (int i = 0; i < n; ++i) {
+        l.points.row(i) = f(a + (b - a) * i / (n - 1)).transpose();
+    }
+    return l;
+}
+
+} // namespace
+
+TEST(CurveNetwork, TwoLinesMeetingEndToEndShareAVertexAndRunOnWithOneTangent)
+{
+    // A helix cut in two where the halves meet: one vertex of degree 2 between them, and the
+    // two B-splines leave it along one tangent.
+    const auto helix = [](double t) {
+        return Eigen::Vector3d(10 * std::cos(t), 10 * std::sin(t), 3 * t);
+    };
+    ExtractionResult r;
+    r.spacing = 1.0;
+    r.junctions.resize(0, 3);
+    r.lines.push_back(openLine(helix, 0.0, 2.0, 40));
+    r.lines.push_back(openLine(helix, 2.0, 4.0, 40));
+    const CurveNetwork net = fitCurveNetwork(r);
+    ASSERT_EQ(net.edges.size(), 2u);
+    ASSERT_EQ(net.vertices.rows(), 3);
+    const NetworkEdge& a = net.edges[0];
+    const NetworkEdge& b = net.edges[1];
+    ASSERT_EQ(a.endVertex, b.startVertex) << "one shared vertex";
+    ASSERT_EQ(a.curve.kind, CurveKind::BSpline);
+    ASSERT_EQ(b.curve.kind, CurveKind::BSpline);
+    EXPECT_GT(curveTangent(a.curve, 1.0).dot(curveTangent(b.curve, 0.0)), 1.0 - 1e-8);
+    EXPECT_LT((net.vertices.row(a.endVertex).transpose() - helix(2.0)).norm(), 1e-9);
+    expectCurvesOnVertices(net);
+}
+
+TEST(CurveNetwork, ALineEndingOnAnotherLinesInteriorCutsItThere)
+{
+    // A smooth line ends half a spacing from the middle of a straight sharp line, without a
+    // junction (as fillet borders end on sharp edges): three edges meet at one new vertex on
+    // the sharp line.
+    ExtractionResult r;
+    r.spacing = 1.0;
+    r.junctions.resize(0, 3);
+    FeatureLine sharp =
+        openLine([](double t) { return Eigen::Vector3d(t, 0, 0); }, -20.0, 20.0, 41);
+    sharp.type = LineType::Sharp;
+    r.lines.push_back(sharp);
+    r.lines.push_back(openLine([](double t) { return Eigen::Vector3d(0.3, t, 0); }, 0.5, 20.0, 20));
+    const CurveNetwork net = fitCurveNetwork(r);
+    ASSERT_EQ(net.edges.size(), 3u);
+    const std::vector<int> degree = vertexDegrees(net);
+    int meeting = -1;
+    for (size_t v = 0; v < degree.size(); ++v) {
+        if (degree[v] == 3) {
+            meeting = static_cast<int>(v);
+        }
+    }
+    ASSERT_GE(meeting, 0) << "a vertex where the three edges meet";
+    EXPECT_LT((net.vertices.row(meeting) - Eigen::RowVector3d(0.3, 0, 0)).norm(), 1e-9)
+        << "on the sharp line, where the smooth line's end projects";
+    for (const NetworkEdge& e : net.edges) {
+        EXPECT_EQ(e.curve.kind, CurveKind::Segment);
+    }
+    expectCurvesOnVertices(net);
+}
