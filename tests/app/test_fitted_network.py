@@ -132,6 +132,14 @@ class BoxTest(unittest.TestCase):
                 self.assertIsInstance(edge.Curve, Part.Line, name)
         # BREP keeps the shared corners; STEP and IGES write each curve with its own ends.
         self.assertEqual(len(Part.read(files["brep"]).Vertexes), 8)
+        # The patch border wires: BREP keeps their 12 shared edges; STEP writes each wire's 4.
+        borders = self.lines.PatchBorders
+        borders.exportBrep(os.path.join(folder, "borders.brep"))
+        back = Part.read(os.path.join(folder, "borders.brep"))
+        self.assertEqual((len(back.Wires), len(back.Edges), len(back.Vertexes)), (6, 12, 8))
+        borders.exportStep(os.path.join(folder, "borders.step"))
+        back = Part.read(os.path.join(folder, "borders.step"))
+        self.assertEqual(len(back.Edges), 6 * 4)
 
     def test_a_filling_on_a_face_wire_lies_on_that_face(self):
         import Surface  # noqa: F401  (registers Surface::Filling)
