@@ -13,13 +13,14 @@
 #include <omp.h>
 
 #include "FeatureLines/io/CloudIO.h"
-#include "FeatureLines/support/DisjointSets.h"
-#include "FeatureLines/support/HugePages.h"
-#include "FeatureLines/support/IdleThreads.h"
+#include "FeatureLines/neighbourhoods/BalancedNeighbourhoods.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/smooth/SmoothEdgeLevel.h"
+#include "FeatureLines/support/DisjointSets.h"
+#include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 namespace featurelines {
 
@@ -253,10 +254,17 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     requireDistinctSurface(g.points, P.rows(), options.k);
     report(progress, 0.0, "neighbours");
     g.neighbours = nearestNeighbours(g.points, options);
-    releaseIdleThreads(); // meanSpacing is a serial sum
-    g.spacing = meanSpacing(g.neighbours);
     report(progress, 0.3, "normals");
     g.normals = pcaNormals(g.points, g.neighbours);
+    // Scan rows too far apart for k neighbours to leave their own row: such neighbourhoods
+    // reach across the rows, and their normals are estimated again.
+    const std::vector<int> rebuilt =
+        balanceCollinearNeighbourhoods(g.points, g.neighbours, g.normals.spread);
+    if (!rebuilt.empty()) {
+        pcaNormalsOfRows(g.points, g.neighbours, rebuilt, g.normals.normals);
+    }
+    releaseIdleThreads(); // samplingSpacing is serial
+    g.spacing = samplingSpacing(g.neighbours);
     return g;
 }
 

@@ -100,6 +100,7 @@ struct CloudGeometry
     std::vector<int> inputToPoint;
     Neighbourhoods neighbours;
     NormalEstimate normals;
+    /// The sampling spacing (samplingSpacing()): every default length is a multiple of it.
     double spacing = 0.0;
 };
 

@@ -17,6 +17,10 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
+/// The rings of neighbours a gap is confirmed over (BoundaryOptions::confirmationReach): the
+/// point's neighbours, theirs and theirs again, as far as the reach.
+constexpr int confirmationRings = 3;
+
 int threadCount(int requested)
 {
     return requested > 0 ? requested : omp_get_max_threads();
@@ -50,6 +54,10 @@ void requireValidInput(const PointMatrix& P, const NormalMatrix& normals, const 
             std::to_string(n) + " points, " + std::to_string(normals.rows()) + " normals, " +
             std::to_string(N.size()) + " neighbourhoods)");
     }
+    if (!(options.confirmationReach >= 0.0) || !std::isfinite(options.confirmationReach)) {
+        throw std::invalid_argument("boundary: the confirmation reach must be 0 or more, not " +
+                                    std::to_string(options.confirmationReach));
+    }
     if (!(options.minGapAngle > 0.0 && options.minGapAngle < 360.0)) {
         throw std::invalid_argument(
             "boundary: the gap angle must be between 0 and 360 degrees, not " +
@@ -63,9 +71,16 @@ void requireValidInput(const PointMatrix& P, const NormalMatrix& normals, const 
 struct TangentView
 {
     explicit TangentView(int k) : xs(k), ys(k), order(k) {}
+    void resize(std::size_t size)
+    {
+        xs.resize(size);
+        ys.resize(size);
+        order.resize(size);
+    }
 
     std::vector<double> xs, ys;
     std::vector<std::pair<double, int>> order; // room for sorting the directions by angle
+    std::vector<Eigen::Index> ring;            // the rings' points (viewOfRings)
     double tiny = 0.0;                         // shorter directions coincide with the point
     int count = 0;
     unsigned sectors = 0;
@@ -129,8 +144,13 @@ bool hasGapWiderThan(TangentView& view, double minGap, double cosMinGap)
         const int to = order[(a + 1) % count].second;
         const double dot = xs[from] * xs[to] + ys[from] * ys[to];
         const double cross = xs[from] * ys[to] - ys[from] * xs[to];
-        const double cosine = dot / std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
-                                              (xs[to] * xs[to] + ys[to] * ys[to]));
+        const double lengths = std::sqrt((xs[from] * xs[from] + ys[from] * ys[from]) *
+                                         (xs[to] * xs[to] + ys[to] * ys[to]));
+        const double cosine = dot / lengths;
+        if (a + 1 < count && cosine > 0.0 && std::abs(cross) <= 1e-9 * lengths) {
+            // The same direction, the sign of the cross product only rounding: no gap.
+            continue;
+        }
         if (cross > 0.0) {
             // The gap is below 180 degrees: acos(cosine).
             wide = minGap < pi && cosine < cosMinGap;
@@ -141,6 +161,52 @@ bool hasGapWiderThan(TangentView& view, double minGap, double cosMinGap)
         }
     }
     return wide;
+}
+
+/// The view from point i of the points within `reach` times its k-th neighbour distance that
+/// confirmationRings rings of neighbours reach, in the frame of its own tangent plane.
+void viewOfRings(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                 Eigen::Index i, double reach, TangentView& view)
+{
+    const int k = N.k();
+    const Eigen::Vector3d normal = normals.row(i).transpose();
+    const Eigen::Vector3d helper =
+        std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d u = normal.cross(helper).normalized();
+    const Eigen::Vector3d v = normal.cross(u);
+    const Eigen::Vector3d p = P.row(i).transpose();
+    const double limit = reach * reach * N.squaredDistances(i, k - 1);
+    std::size_t count = 0;
+    auto add = [&](Eigen::Index q) {
+        const Eigen::Vector3d d = P.row(q).transpose() - p;
+        if (q != i && d.squaredNorm() <= limit) {
+            view.xs[count] = d.dot(u);
+            view.ys[count] = d.dot(v);
+            ++count;
+        }
+    };
+    std::vector<Eigen::Index>& ring = view.ring;
+    ring.assign(1, i);
+    for (int depth = 0; depth < confirmationRings; ++depth) {
+        const std::size_t inner = ring.size();
+        for (std::size_t r = 0; r < inner; ++r) {
+            const Eigen::Index q = ring[r];
+            if ((P.row(q) - P.row(i)).squaredNorm() > limit) {
+                continue;
+            }
+            for (int m = 0; m < k; ++m) {
+                ring.push_back(N.indices(q, m));
+            }
+        }
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    }
+    view.resize(ring.size());
+    for (const Eigen::Index q : ring) {
+        add(q);
+    }
+    view.resize(count);
+    view.tiny = 1e-12 * (1.0 + P.row(i).cwiseAbs().maxCoeff());
 }
 
 } // namespace
@@ -167,6 +233,19 @@ std::vector<char> boundaryPoints(const PointMatrix& P, const NormalMatrix& norma
                 continue;
             }
             boundary[i] = hasGapWiderThan(view, minGap, cosMinGap) ? 1 : 0;
+        }
+    }
+    if (options.confirmationReach > 0.0) {
+#pragma omp parallel num_threads(threadCount(options.threads))
+        {
+            TangentView ring(N.k());
+#pragma omp for schedule(dynamic, 256)
+            for (Eigen::Index i = 0; i < n; ++i) {
+                if (boundary[i]) {
+                    viewOfRings(P, normals, N, i, options.confirmationReach, ring);
+                    boundary[i] = hasGapWiderThan(ring, minGap, cosMinGap) ? 1 : 0;
+                }
+            }
         }
     }
     return boundary;

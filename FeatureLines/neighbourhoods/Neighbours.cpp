@@ -663,4 +663,20 @@ double meanSpacing(const Neighbourhoods& neighbourhoods)
     return sum / static_cast<double>(counted);
 }
 
+double samplingSpacing(const Neighbourhoods& neighbourhoods)
+{
+    const double nearest = meanSpacing(neighbourhoods);
+    const Eigen::Index n = neighbourhoods.size();
+    const int k = neighbourhoods.k();
+    std::vector<double> radii(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        radii[static_cast<std::size_t>(i)] = neighbourhoods.squaredDistances(i, k - 1);
+    }
+    const auto middle = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
+    std::nth_element(radii.begin(), middle, radii.end());
+    constexpr double evenSamplingShare = 0.8;
+    const double area = std::sqrt(M_PI * *middle / static_cast<double>(k));
+    return std::max(nearest, evenSamplingShare * area);
+}
+
 } // namespace featurelines

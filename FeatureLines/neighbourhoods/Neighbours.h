@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// k nearest neighbours of every point, and the cloud's mean point spacing (Sec. 2.1).
+// k nearest neighbours of every point, and the cloud's point spacing (Sec. 2.1).
 // Design: docs/design/neighbourhoods.md.
 #pragma once
 
@@ -41,5 +41,14 @@ Neighbourhoods nearestNeighbours(const PointMatrix& P, const NeighbourOptions& o
 /// duplicates are not spacing). Every default length of the library is a multiple of it.
 /// Throws std::invalid_argument when every point coincides with its neighbours.
 double meanSpacing(const Neighbourhoods& neighbourhoods);
+
+/// The sampling's spacing: the mean nearest spacing, raised where the cloud is sparser than
+/// its nearest spacings say. An even (Poisson disk) sampling has its points about 0.8 of the
+/// square root of the area per point apart; a random one, or scan lines finer along a row than
+/// across, has nearest neighbours much closer than that (0.5-0.6), although its gaps are as
+/// wide. The area per point is measured by the median radius r of the k-neighbourhoods
+/// (k points in pi r^2), so the result is max(meanSpacing, 0.8 sqrt(pi r^2 / k)).
+/// Throws std::invalid_argument when every point coincides with its neighbours.
+double samplingSpacing(const Neighbourhoods& neighbourhoods);
 
 } // namespace featurelines

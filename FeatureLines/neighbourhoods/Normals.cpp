@@ -19,9 +19,10 @@ int threadCount(int requested)
     return requested > 0 ? requested : omp_get_max_threads();
 }
 
-/// The PCA normal and surface variation of point i over its first k neighbours.
+/// The PCA normal, surface variation and spread of point i over its first k neighbours
+/// (variation and spread when given).
 void fitNormal(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i, int k,
-               NormalMatrix& normals, Eigen::VectorXd* variation)
+               NormalMatrix& normals, Eigen::VectorXd* variation, Eigen::VectorXd* spread)
 {
     // Moments relative to the point itself: the covariance of a small neighbourhood far
     // from the origin would otherwise lose its digits to cancellation. The six products
@@ -63,6 +64,7 @@ void fitNormal(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i, in
         normals.row(i) = Eigen::RowVector3d::UnitZ();
         if (variation) {
             (*variation)(i) = 0.0;
+            (*spread)(i) = 0.0;
         }
         return;
     }
@@ -76,6 +78,7 @@ void fitNormal(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i, in
     normals.row(i) = normal.normalized().transpose();
     if (variation) {
         (*variation)(i) = lambda(0) / total;
+        (*spread)(i) = lambda(1) / lambda(2);
     }
 }
 
@@ -105,10 +108,11 @@ NormalEstimate pcaNormals(const PointMatrix& P, const Neighbourhoods& N,
     NormalEstimate result;
     result.normals.resize(n, 3);
     result.variation.resize(n);
+    result.spread.resize(n);
     adviseHugePagesOf(result.normals);
 #pragma omp parallel for schedule(static, 4096) num_threads(threadCount(options.threads))
     for (Eigen::Index i = 0; i < n; ++i) {
-        fitNormal(P, N, i, k, result.normals, &result.variation);
+        fitNormal(P, N, i, k, result.normals, &result.variation, &result.spread);
     }
     return result;
 }
@@ -129,7 +133,7 @@ void pcaNormalsOfRows(const PointMatrix& P, const Neighbourhoods& N, const std::
     }
 #pragma omp parallel for schedule(static, 1024) num_threads(threadCount(options.threads))
     for (long r = 0; r < static_cast<long>(rows.size()); ++r) {
-        fitNormal(P, N, rows[static_cast<size_t>(r)], k, normals, nullptr);
+        fitNormal(P, N, rows[static_cast<size_t>(r)], k, normals, nullptr, nullptr);
     }
 }
 

@@ -25,6 +25,9 @@ struct NormalEstimate
     /// V  #P surface variation lambda0 / (lambda0 + lambda1 + lambda2) (Pauly et al.), 0 on a
     /// plane, up to 1/3 for isotropic scatter.
     Eigen::VectorXd variation;
+    /// S  #P spread lambda1 / lambda2 of the neighbourhood in its own plane: near 0 where the
+    /// neighbours lie along a line (one scan row), near 1 where they spread evenly.
+    Eigen::VectorXd spread;
 };
 
 /// PCA normals of P over the neighbourhoods N.

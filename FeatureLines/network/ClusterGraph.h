@@ -12,7 +12,7 @@
 
 namespace featurelines {
 
-/// Lengths are in multiples of the cloud's mean point spacing, angles in degrees.
+/// Lengths are in multiples of the cloud's sampling spacing (samplingSpacing()), angles in degrees.
 struct ClusterGraphOptions
 {
     /// Candidate clusters gathered into nodes within this radius of a node's first cluster (0:
@@ -95,7 +95,7 @@ struct ClusterGraphInput
     const std::vector<int>& cluster;
     /// #C, nonzero for the clusters that become graph nodes.
     const std::vector<char>& candidateCluster;
-    /// The cloud's mean point spacing (every option length is a multiple of it).
+    /// The cloud's sampling spacing (samplingSpacing(); every option length is a multiple of it).
     double spacing;
     /// Null or empty, or #C labels: nodes never mix labels and lines carry the majority label
     /// of their nodes.

@@ -21,7 +21,7 @@ struct CreasePlacementInput
     /// The sharp stage's segmentation (its large clusters are the faces fitted) and boundary
     /// points (fitted to no face); its network is not read.
     const SharpEdges& sharp;
-    /// The cloud's mean point spacing (meanSpacing()).
+    /// The cloud's sampling spacing (samplingSpacing()).
     double spacing;
 };
 

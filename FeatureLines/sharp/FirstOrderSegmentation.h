@@ -78,7 +78,7 @@ struct FirstOrderSegmentation
 ///   P        #P by 3 points
 ///   normals  #P by 3 unit normals, e.g. from pcaNormals()
 ///   N        the k nearest neighbours the normals were estimated on
-///   spacing  the cloud's mean point spacing (meanSpacing())
+///   spacing  the cloud's sampling spacing (samplingSpacing())
 /// A point grows its cluster unless both its normal spread and its planarity excess are high;
 /// one that does not grow joins the cluster of its growing neighbour of closest normal (within
 /// joinAngle), unless it lies between two faces (the design note). Every point ends in exactly

@@ -70,7 +70,7 @@ struct SharpEdges
 ///   P        #P by 3 points
 ///   normals  #P by 3 unit normals over N (e.g. pcaNormals()), unoriented
 ///   N        k nearest neighbours of every point
-///   spacing  mean point spacing (meanSpacing()); every length option is a multiple of it
+///   spacing  sampling spacing (samplingSpacing()); every length option is a multiple of it
 /// A plane, a sphere or any surface whose normals turn slowly gives no sharp line.
 /// Throws std::invalid_argument when the sizes disagree, the spacing is not positive, or the
 /// points lie on a line (no surface to have edges).

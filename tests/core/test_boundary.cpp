@@ -187,6 +187,96 @@ TEST(Boundary, ThinnedSamplingGivesTheBorderOnly)
     }
 }
 
+// Independent uniform points (no Poisson disk, no grid: the clumps and gaps of a random
+// sampling). Inside, about 4 % of the points see a gap wider than 120 degrees among their 16
+// neighbours; one ring further out the gap is filled, so none is a boundary point. On a sphere
+// there is then no boundary at all; on a square sheet every boundary point lies at the border
+// and the border is found all round.
+namespace {
+
+PointMatrix uniformSphere(double radius, int count, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> gauss;
+    PointMatrix P(count, 3);
+    for (int i = 0; i < count; ++i) {
+        const Eigen::Vector3d d(gauss(random), gauss(random), gauss(random));
+        P.row(i) = radius * d.normalized().transpose();
+    }
+    return P;
+}
+
+PointMatrix uniformSquare(double size, int count, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> coordinate(-size / 2, size / 2);
+    PointMatrix P(count, 3);
+    for (int i = 0; i < count; ++i) {
+        P.row(i) << coordinate(random), coordinate(random), 0.0;
+    }
+    return P;
+}
+
+int flaggedCount(const std::vector<char>& flags)
+{
+    int count = 0;
+    for (char f : flags) {
+        count += f;
+    }
+    return count;
+}
+
+} // namespace
+
+TEST(Boundary, RandomSamplingOfAClosedSurfaceHasNone)
+{
+    const PointMatrix sphere = uniformSphere(20.0, 20000, 21);
+    const Neighbourhoods N = nearestNeighbours(sphere);
+    const NormalEstimate normals = pcaNormals(sphere, N);
+    BoundaryOptions firstRingOnly;
+    firstRingOnly.confirmationReach = 0.0;
+    // The k neighbours alone leave chance gaps: the test below is not empty-handed.
+    EXPECT_GT(flaggedCount(boundaryPoints(sphere, normals.normals, N, firstRingOnly)), 100);
+    EXPECT_EQ(flaggedCount(boundaryPoints(sphere, normals.normals, N)), 0);
+    EXPECT_TRUE(extract(sphere).boundary.network.lines.empty());
+}
+
+TEST(Boundary, RandomSamplingOfASheetGivesItsBorderAllRound)
+{
+    const double size = 60.0, h = size / 2;
+    const PointMatrix sheet = uniformSquare(size, 12000, 22);
+    const BoundaryRun r = extract(sheet);
+    std::vector<Eigen::Vector2d> found;
+    for (Eigen::Index i = 0; i < sheet.rows(); ++i) {
+        if (r.boundary.isBoundary[static_cast<size_t>(i)]) {
+            EXPECT_LT(distanceToSquareOutline(sheet(i, 0), sheet(i, 1), h), 5.0 * r.spacing)
+                << "boundary point inside the sheet at " << i;
+            found.emplace_back(sheet(i, 0), sheet(i, 1));
+        }
+    }
+    // Every stretch of the outline has a boundary point within two spacings of where the
+    // cloud itself ends (a random sampling leaves the outline bare here and there).
+    const auto nearestTo = [](const std::vector<Eigen::Vector2d>& points,
+                              const Eigen::Vector2d& x) {
+        double nearest = 1e300;
+        for (const Eigen::Vector2d& p : points) {
+            nearest = std::min(nearest, (p - x).norm());
+        }
+        return nearest;
+    };
+    std::vector<Eigen::Vector2d> cloud;
+    for (Eigen::Index i = 0; i < sheet.rows(); ++i) {
+        cloud.emplace_back(sheet(i, 0), sheet(i, 1));
+    }
+    for (double t = -h; t <= h; t += r.spacing) {
+        for (const Eigen::Vector2d& onOutline : {Eigen::Vector2d(t, -h), Eigen::Vector2d(t, h),
+                                                 Eigen::Vector2d(-h, t), Eigen::Vector2d(h, t)}) {
+            EXPECT_LT(nearestTo(found, onOutline), nearestTo(cloud, onOutline) + 2.0 * r.spacing)
+                << "no boundary point near " << onOutline.transpose();
+        }
+    }
+}
+
 TEST(Boundary, BadInputThrows)
 {
     const shapes::Sample plane = shapes::plane(10.0, 1.0, 1);
@@ -198,6 +288,10 @@ TEST(Boundary, BadInputThrows)
     BoundaryOptions zero;
     zero.minGapAngle = 0.0;
     EXPECT_THROW(boundaryPoints(plane.points, normals.normals, N, zero), std::invalid_argument);
+    BoundaryOptions negativeReach;
+    negativeReach.confirmationReach = -1.0;
+    EXPECT_THROW(boundaryPoints(plane.points, normals.normals, N, negativeReach),
+                 std::invalid_argument);
     // Every neighbour on the point itself: no direction, no boundary, no crash.
     const PointMatrix same = PointMatrix::Ones(30, 3);
     const Neighbourhoods SN = nearestNeighbours(same);

@@ -200,6 +200,53 @@ TEST(Neighbours, MeanSpacingOfSquareLattice)
     EXPECT_DOUBLE_EQ(meanSpacing(N), 0.25);
 }
 
+namespace {
+
+/// Rows of points `step` apart along x, `rowGap` apart along y, in the plane z = 0.
+PointMatrix rowsOfPoints(int perRow, int rows, double step, double rowGap)
+{
+    PointMatrix P(perRow * rows, 3);
+    for (int r = 0; r < rows; ++r) {
+        for (int i = 0; i < perRow; ++i) {
+            P.row(r * perRow + i) << i * step, r * rowGap, 0.0;
+        }
+    }
+    return P;
+}
+
+} // namespace
+
+TEST(Neighbours, SamplingSpacingOfAnEvenSamplingIsItsNearestSpacing)
+{
+    // A square lattice is as even as a sampling gets: nothing to raise.
+    const Neighbourhoods N = nearestNeighbours(squareLattice(40, 0.25), {16, 0});
+    EXPECT_DOUBLE_EQ(samplingSpacing(N), meanSpacing(N));
+}
+
+TEST(Neighbours, SamplingSpacingOfScanRowsFollowsTheAreaPerPoint)
+{
+    // Rows 4 steps apart: nearest neighbours 1 step away along a row, but one point per 4
+    // square steps, so 0.8 * sqrt(4) = 1.6 steps (to the k-neighbourhood's rounding).
+    const Neighbourhoods N = nearestNeighbours(rowsOfPoints(200, 50, 1.0, 4.0), {16, 0});
+    EXPECT_DOUBLE_EQ(meanSpacing(N), 1.0);
+    EXPECT_NEAR(samplingSpacing(N), 1.6, 0.16);
+}
+
+TEST(Neighbours, SamplingSpacingOfARandomSamplingFollowsTheAreaPerPoint)
+{
+    // 40 000 uniform random points on a unit square: 1/200 apart on average per area, but
+    // nearest neighbours only half that (1 / (2 sqrt(density))).
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    PointMatrix P(40000, 3);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        P.row(i) << unit(rng), unit(rng), 0.0;
+    }
+    const Neighbourhoods N = nearestNeighbours(P, {16, 0});
+    EXPECT_NEAR(meanSpacing(N), 0.5 / 200.0, 0.05 / 200.0);
+    EXPECT_NEAR(samplingSpacing(N), 0.8 / 200.0, 0.08 / 200.0);
+}
+
 TEST(Neighbours, BadInputThrows)
 {
     const PointMatrix P = randomCloud(10, 3);
