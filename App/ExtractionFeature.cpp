@@ -3,11 +3,13 @@
 
 #include "ExtractionFeature.h"
 
+#include <Base/Console.h>
 #include <Base/Exception.h>
 #include <Mod/Points/App/PointsFeature.h>
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -171,10 +173,9 @@ void checkPoints(const Points::PointKernel& kernel, const std::string& label,
 
 /// The core's result for the cloud (through the cache), with progress and cancelling; a result
 /// without lines is an error.
-ExtractionResult extractLines(const Points::PointKernel& kernel, const std::string& label,
+ExtractionResult extractLines(const PointMatrix& P, const std::string& label,
                               featurelines::ExtractionOptions options)
 {
-    const PointMatrix P = kernelPoints(kernel);
     ExtractionProgress progress("Feature lines of " + label);
     options.progress = progress.callback();
     ExtractionResult result;
@@ -188,7 +189,7 @@ ExtractionResult extractLines(const Points::PointKernel& kernel, const std::stri
     }
     if (result.lines.empty()) {
         throw ExecError{
-            "No feature lines found in '" + label + "' (" + std::to_string(kernel.size()) +
+            "No feature lines found in '" + label + "' (" + std::to_string(P.rows()) +
             " points, spacing " + formatValue(result.spacing) +
             "): no crease turns beyond GrowAngle and no smooth region's curvature histogram has "
             "a significant valley. Lower GrowAngle for shallow creases, or set ThresholdMode to "
@@ -242,6 +243,27 @@ Extraction::Extraction()
     ADD_PROPERTY_TYPE(LineIds, (), "Output", perPointType,
                       "Per wire of Shape: the ids of the extraction's lines it is made of "
                       "('3', or '3 7' for merged lines), the ids RemovedLines holds.");
+    ADD_PROPERTY_TYPE(Polylines, (TopoDS_Shape()), "Output", outputType,
+                      "The lines as the polylines the curves of Shape were fitted to, wire for "
+                      "wire as in Shape.");
+    ADD_PROPERTY_TYPE(CurveKinds, (), "Output", outputType,
+                      "Per edge of Shape: its curve (segment, arc, circle, bspline, or polyline "
+                      "where no curve could be fitted).");
+    ADD_PROPERTY_TYPE(CurveProblems, (), "Output", outputType,
+                      "Edges drawn as their polyline because their curve made no edge, and why.");
+    ADD_PROPERTY_TYPE(PatchBorders, (TopoDS_Shape()), "Output", outputType,
+                      "The closed border wires of the patches, on the edges of Shape: per patch "
+                      "its outer wire, then its holes (e.g. for Surface > Filling).");
+    ADD_PROPERTY_TYPE(PatchBorderPatches, (), "Output", outputType,
+                      "Per wire of PatchBorders: its patch (see PointPatch).");
+    ADD_PROPERTY_TYPE(PatchBorderEdges, (), "Output", outputType,
+                      "Per wire of PatchBorders: its edges' names in Shape ('Edge3 Edge7 ...'), "
+                      "e.g. for a Surface::Filling's BoundaryEdges.");
+    ADD_PROPERTY_TYPE(OpenPatches, (), "Output", outputType,
+                      "Patches whose border the lines found do not close: no wire in "
+                      "PatchBorders.");
+    ADD_PROPERTY_TYPE(OpenPatchReasons, (), "Output", outputType,
+                      "Per patch of OpenPatches: why its border is not closed.");
     ADD_PROPERTY_TYPE(Junctions, (), "Output", outputType,
                       "Points where three or more lines meet.");
     ADD_PROPERTY_TYPE(Spacing, (0.0), "Output", outputType,
@@ -349,12 +371,32 @@ App::DocumentObjectExecReturn* Extraction::execute()
         const featurelines::ExtractionOptions options = checkedOptions(*this);
         const Points::PointKernel& kernel = cloud.Points.getValue();
         checkPoints(kernel, labelOf(&cloud), options);
-        const ExtractionResult result = extractLines(kernel, labelOf(&cloud), options);
-        setOutputs(toOutputs(result, kernel.getTransform(), lineCleaning()));
+        const PointMatrix P = kernelPoints(kernel);
+        const ExtractionResult result = extractLines(P, labelOf(&cloud), options);
+        const ExtractionOutputs outputs =
+            toOutputs(result, P, kernel.getTransform(), lineCleaning());
+        setOutputs(outputs);
+        reportNetwork(outputs.network);
     } catch (const ExecError& e) {
         return new App::DocumentObjectExecReturn(e.message);
     }
     return App::DocumentObject::StdReturn;
+}
+
+void Extraction::reportNetwork(const NetworkOutputs& network) const
+{
+    // Said in the report view; the lists stay on the object (CurveProblems, OpenPatchReasons).
+    for (const std::string& problem : network.curveProblems) {
+        Base::Console().Warning("%s: %s\n", Label.getValue(), problem.c_str());
+    }
+    if (!network.openPatches.empty()) {
+        Base::Console().Message(
+            "%s: %zu of %zu patches have no closed border (OpenPatchReasons "
+            "says why)\n",
+            Label.getValue(), network.openPatches.size(),
+            network.openPatches.size() +
+                std::set<long>(network.borderPatches.begin(), network.borderPatches.end()).size());
+    }
 }
 
 LineCleaning Extraction::lineCleaning() const
@@ -369,14 +411,18 @@ LineCleaning Extraction::lineCleaning() const
 
 void Extraction::setOutputs(const ExtractionOutputs& out)
 {
-    const LineWires& w = out.wires;
+    const LineWires& w = out.network.wires;
     Shape.setValue(makeCompoundOfAll(w));
     LineIds.setValues(wireLineIds(w));
 
-    const Base::Matrix4D placement = Placement.getValue().toMatrix();
-    auto placed = [&](const std::vector<TopoDS_Wire>& wires) {
-        Part::TopoShape shape(makeCompound(wires));
-        shape.setTransform(placement);
+    // Placed with Shape's own location (the object's Placement, which Part::Feature gave it),
+    // so that an edge of SharpWires or PatchBorders is the very edge of Shape (isSame).
+    auto placed = [&](std::vector<TopoDS_Wire> wires, const std::vector<TopoDS_Wire>& more = {},
+                      const std::vector<TopoDS_Wire>& andMore = {}) {
+        wires.insert(wires.end(), more.begin(), more.end());
+        wires.insert(wires.end(), andMore.begin(), andMore.end());
+        TopoDS_Shape shape = makeCompound(wires);
+        shape.Location(Shape.getValue().Location());
         return shape;
     };
     SharpWires.setValue(placed(w.sharp));
@@ -388,6 +434,15 @@ void Extraction::setOutputs(const ExtractionOutputs& out)
     ClosedLineCount.setValue(w.closed);
     SmoothLineRegions.setValues(w.smoothRegion);
     SmoothLineThresholds.setValues(w.smoothThreshold);
+
+    Polylines.setValue(placed(out.polylines.sharp, out.polylines.smooth, out.polylines.boundary));
+    CurveKinds.setValues(out.network.curveKinds);
+    CurveProblems.setValues(out.network.curveProblems);
+    PatchBorders.setValue(placed(out.network.borderWires));
+    PatchBorderPatches.setValues(out.network.borderPatches);
+    PatchBorderEdges.setValues(out.network.borderEdgeNames);
+    OpenPatches.setValues(out.network.openPatches);
+    OpenPatchReasons.setValues(out.network.openPatchReasons);
 
     Junctions.setValues(out.junctions);
     Spacing.setValue(out.spacing);
@@ -423,12 +478,17 @@ void Extraction::onDocumentRestored()
 
 void Extraction::onChanged(const App::Property* prop)
 {
-    // The lines by type follow the object's placement as Shape does (Part::Feature::onChanged).
+    Part::Feature::onChanged(prop);
+    // The other shapes follow the object's placement as Shape does (Part::Feature::onChanged
+    // has just moved it), with Shape's very location: their edges stay Shape's (isSame).
     if (prop == &Placement) {
-        const Base::Matrix4D placement = Placement.getValue().toMatrix();
-        for (Part::PropertyPartShape* shape : {&SharpWires, &SmoothWires, &BoundaryWires}) {
-            const_cast<Part::TopoShape&>(shape->getShape()).setTransform(placement);
+        for (Part::PropertyPartShape* shape :
+             {&SharpWires, &SmoothWires, &BoundaryWires, &Polylines, &PatchBorders}) {
+            TopoDS_Shape moved = shape->getValue();
+            if (!moved.IsNull()) {
+                moved.Location(Shape.getValue().Location());
+                const_cast<Part::TopoShape&>(shape->getShape()).setShape(moved);
+            }
         }
     }
-    Part::Feature::onChanged(prop);
 }

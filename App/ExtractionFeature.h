@@ -72,7 +72,8 @@ public:
     App::PropertyIntegerList RemovedLines;
     App::PropertyBool MergeEndToEnd;
 
-    // Output: the lines by type (Shape holds them all: sharp, then smooth, then boundary).
+    // Output: the lines by type (Shape holds them all: sharp, then smooth, then boundary), one
+    // wire per line on the fitted network's edges (NetworkOutputs.h).
     Part::PropertyPartShape SharpWires;
     Part::PropertyPartShape SmoothWires;
     Part::PropertyPartShape BoundaryWires;
@@ -86,6 +87,21 @@ public:
     /// Per wire of Shape: the ids of the extraction's lines it is made of ("3", or "3 7" for
     /// merged lines), the ids RemovedLines holds.
     App::PropertyStringList LineIds;
+    /// The lines as the polylines the curves were fitted to, wire for wire as in Shape.
+    Part::PropertyPartShape Polylines;
+    /// Per edge of Shape: its curve, "segment", "arc", "circle", "bspline" or "polyline".
+    App::PropertyStringList CurveKinds;
+    /// One line per edge or line drawn as its polyline because its curve made no edge.
+    App::PropertyStringList CurveProblems;
+    /// The closed border wires of the patches (outer wire, then holes, patch by patch) on the
+    /// edges of Shape, and the patch of each wire.
+    Part::PropertyPartShape PatchBorders;
+    App::PropertyIntegerList PatchBorderPatches;
+    /// Per wire of PatchBorders: its edges' names in Shape, "Edge3 Edge7 ...".
+    App::PropertyStringList PatchBorderEdges;
+    /// The patches the lines found leave open (no wire in PatchBorders), and why.
+    App::PropertyIntegerList OpenPatches;
+    App::PropertyStringList OpenPatchReasons;
     App::PropertyVectorList Junctions;
     App::PropertyLength Spacing;
     App::PropertyInteger RegionCount;
@@ -124,6 +140,8 @@ protected:
 private:
     void initParameter(App::Property& property, const char* name);
     void setOutputs(const ExtractionOutputs& outputs);
+    /// The network's problems in the report view: edges drawn as polylines, open patches.
+    void reportNetwork(const NetworkOutputs& network) const;
     /// The cleaning the properties ask for.
     LineCleaning lineCleaning() const;
 

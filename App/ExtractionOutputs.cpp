@@ -5,6 +5,7 @@
 
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <Precision.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Pnt.hxx>
@@ -14,6 +15,8 @@
 #include <algorithm>
 #include <map>
 #include <set>
+
+#include "NetworkOutputs.h"
 
 namespace FeatureLines {
 
@@ -251,30 +254,45 @@ std::vector<std::string> wireLineIds(const LineWires& w)
     return out;
 }
 
-LineWires makeWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld)
+bool polylineWire(const CleanedLine& cleaned, const Base::Matrix4D& toWorld, TopoDS_Wire& wire)
+{
+    bool closed = false;
+    const std::vector<gp_Pnt> vertices = wireVertices(cleaned.line, toWorld, closed);
+    if (vertices.size() < 2) {
+        return false; // all vertices coincide: no wire
+    }
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const gp_Pnt& v : vertices) {
+        polygon.Add(v);
+    }
+    if (closed) {
+        polygon.Close();
+    }
+    if (!polygon.IsDone()) {
+        return false;
+    }
+    wire = polygon.Wire();
+    return true;
+}
+
+LineWires makeWires(const std::vector<CleanedLine>& lines, const WireOfLine& wireOf)
 {
     LineWires out;
     for (const CleanedLine& cleaned : lines) {
-        const featurelines::FeatureLine& line = cleaned.line;
-        bool closed = false;
-        const std::vector<gp_Pnt> vertices = wireVertices(line, toWorld, closed);
-        if (vertices.size() < 2) {
-            continue; // all vertices coincide: no wire
+        TopoDS_Wire wire;
+        if (wireOf(cleaned, wire)) {
+            out.closed += BRep_Tool::IsClosed(wire) ? 1 : 0;
+            addWire(out, cleaned, wire);
         }
-        BRepBuilderAPI_MakePolygon polygon;
-        for (const gp_Pnt& v : vertices) {
-            polygon.Add(v);
-        }
-        if (closed) {
-            polygon.Close();
-        }
-        if (!polygon.IsDone()) {
-            continue;
-        }
-        out.closed += closed ? 1 : 0;
-        addWire(out, cleaned, polygon.Wire());
     }
     return out;
+}
+
+LineWires makePolylineWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld)
+{
+    return makeWires(lines, [&](const CleanedLine& line, TopoDS_Wire& wire) {
+        return polylineWire(line, toWorld, wire);
+    });
 }
 
 TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires)
@@ -296,11 +314,13 @@ TopoDS_Shape makeCompoundOfAll(const LineWires& w)
     return makeCompound(all);
 }
 
-ExtractionOutputs toOutputs(const ExtractionResult& result, const Base::Matrix4D& toWorld,
-                            const LineCleaning& cleaning)
+ExtractionOutputs toOutputs(const ExtractionResult& result, const PointMatrix& P,
+                            const Base::Matrix4D& toWorld, const LineCleaning& cleaning)
 {
     ExtractionOutputs out;
-    out.wires = makeWires(cleanLines(result.lines, cleaning, toWorld), toWorld);
+    const std::vector<CleanedLine> lines = cleanLines(result.lines, cleaning, toWorld);
+    out.polylines = makePolylineWires(lines, toWorld);
+    out.network = makeNetworkOutputs(result, P, lines, toWorld);
     out.junctions = worldJunctions(result, toWorld);
     out.spacing = result.spacing;
     setThresholds(out, result);

@@ -11,6 +11,7 @@
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,8 +73,7 @@ struct CleanedLine
 std::vector<CleanedLine> cleanLines(const std::vector<featurelines::FeatureLine>& lines,
                                     const LineCleaning& cleaning, const Base::Matrix4D& toWorld);
 
-/// The lines as wires by type, in world coordinates; lines whose vertices all coincide are
-/// skipped.
+/// The lines as wires by type, in world coordinates.
 struct LineWires
 {
     std::vector<TopoDS_Wire> sharp, smooth, boundary;
@@ -84,7 +84,15 @@ struct LineWires
     std::vector<double> smoothThreshold;
     int closed = 0;
 };
-LineWires makeWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld);
+/// How one line becomes a wire: false when it makes none.
+using WireOfLine = std::function<bool(const CleanedLine& line, TopoDS_Wire& wire)>;
+/// The lines as wires by type, each made by `wireOf`; the lines it makes no wire of are skipped.
+LineWires makeWires(const std::vector<CleanedLine>& lines, const WireOfLine& wireOf);
+/// The line's polyline as a wire of straight edges, in world coordinates; false when its
+/// vertices all coincide.
+bool polylineWire(const CleanedLine& line, const Base::Matrix4D& toWorld, TopoDS_Wire& wire);
+/// The lines as their polylines (makeWires with polylineWire).
+LineWires makePolylineWires(const std::vector<CleanedLine>& lines, const Base::Matrix4D& toWorld);
 /// The ids of every wire in the order of makeCompoundOfAll, one "3" or "3 7" string per wire.
 std::vector<std::string> wireLineIds(const LineWires& wires);
 /// A compound of the wires, in order.
@@ -92,10 +100,37 @@ TopoDS_Shape makeCompound(const std::vector<TopoDS_Wire>& wires);
 /// A compound of every wire: the sharp ones, then the smooth ones, then the boundary.
 TopoDS_Shape makeCompoundOfAll(const LineWires& wires);
 
+/// The fitted line network as FreeCAD shows it (NetworkOutputs.h builds it): the lines on the
+/// network's edges, the patches' closed borders, and what could not be fitted or closed.
+struct NetworkOutputs
+{
+    /// One wire per cleaned line (as LineWires orders them), on the fitted edges, which share
+    /// one vertex per junction; a line whose edges make no wire is its polyline.
+    LineWires wires;
+    /// Per edge of makeCompoundOfAll(wires), in TopExp's order: "segment", "arc", "circle",
+    /// "bspline", or "polyline" where the fitted curve made no edge.
+    std::vector<std::string> curveKinds;
+    /// The closed border wires of every patch whose border the lines close (its outer wire
+    /// first, then its holes) and the patch of each.
+    std::vector<TopoDS_Wire> borderWires;
+    std::vector<long> borderPatches;
+    /// Per border wire, its edges' names in makeCompoundOfAll(wires), "Edge3 Edge7 ..." (what
+    /// a Surface::Filling's BoundaryEdges links).
+    std::vector<std::string> borderEdgeNames;
+    /// The patches whose border is not closed, and why ("patch 4: ..."), in parallel.
+    std::vector<long> openPatches;
+    std::vector<std::string> openPatchReasons;
+    /// One line per edge drawn as its polyline or left out, and per line without fitted wire.
+    std::vector<std::string> curveProblems;
+};
+
 /// Everything FreeCAD shows of a result.
 struct ExtractionOutputs
 {
-    LineWires wires;
+    /// The lines on the fitted network's edges, the patches' borders (Shape, PatchBorders).
+    NetworkOutputs network;
+    /// The lines as the polylines the curves were fitted to, wire for wire (Polylines).
+    LineWires polylines;
     /// Points where three or more lines meet, in world coordinates.
     std::vector<Base::Vector3d> junctions;
     /// Mean point spacing of the cloud.
@@ -116,7 +151,9 @@ struct ExtractionOutputs
 };
 
 /// The result in world coordinates (`toWorld`: the source cloud's placement), its lines cleaned.
+/// P  #P by 3 the cloud the result came from, in its own coordinates.
 ExtractionOutputs toOutputs(const featurelines::ExtractionResult& result,
-                            const Base::Matrix4D& toWorld, const LineCleaning& cleaning = {});
+                            const featurelines::PointMatrix& P, const Base::Matrix4D& toWorld,
+                            const LineCleaning& cleaning = {});
 
 } // namespace FeatureLines

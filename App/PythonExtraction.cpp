@@ -38,11 +38,34 @@ Py::List wireList(const std::vector<TopoDS_Wire>& wires)
 /// The dict extract() returns (its doc string lists the keys).
 Py::Dict extractionDict(const ExtractionOutputs& o)
 {
-    const LineWires& w = o.wires;
+    const LineWires& w = o.network.wires;
     Py::Dict out;
     out["sharp"] = wireList(w.sharp);
     out["smooth"] = wireList(w.smooth);
     out["boundary"] = wireList(w.boundary);
+    Py::Dict polylines;
+    polylines["sharp"] = wireList(o.polylines.sharp);
+    polylines["smooth"] = wireList(o.polylines.smooth);
+    polylines["boundary"] = wireList(o.polylines.boundary);
+    out["polylines"] = polylines;
+    out["curve_kinds"] = stringList(o.network.curveKinds);
+    out["curve_problems"] = stringList(o.network.curveProblems);
+    Py::Dict borders;
+    for (size_t i = 0; i < o.network.borderWires.size(); ++i) {
+        const Py::Long patch(o.network.borderPatches[i]);
+        if (!borders.hasKey(patch)) {
+            borders[patch] = Py::List();
+        }
+        Py::List(borders[patch])
+            .append(Py::asObject(
+                new Part::TopoShapeWirePy(new Part::TopoShape(o.network.borderWires[i]))));
+    }
+    out["patch_borders"] = borders;
+    Py::Dict open;
+    for (size_t i = 0; i < o.network.openPatches.size(); ++i) {
+        open[Py::Long(o.network.openPatches[i])] = Py::String(o.network.openPatchReasons[i]);
+    }
+    out["open_patches"] = open;
     out["smooth_regions"] = intList(w.smoothRegion);
     out["smooth_thresholds"] = floatList(w.smoothThreshold);
     out["closed"] = Py::Long(w.closed);
@@ -116,7 +139,15 @@ void Module::addExtractionFunctions()
         "FeatureLines::Extraction object (FeatureLines.parameters() lists them), e.g.\n"
         "extract(cloud, ThresholdMode='Explicit', Thresholds=[0.1]).\n"
         "Returns a dict:\n"
-        "  'sharp', 'smooth', 'boundary': lists of Part.Wire in world coordinates\n"
+        "  'sharp', 'smooth', 'boundary': lists of Part.Wire in world coordinates, one per\n"
+        "      line, on the fitted curves (lines, arcs, circles, B-splines) that share one\n"
+        "      vertex where lines meet\n"
+        "  'polylines': {'sharp', 'smooth', 'boundary'}: the same lines as the polylines the\n"
+        "      curves were fitted to; 'curve_kinds': per edge of the wires (in the order of\n"
+        "      Part.makeCompound(sharp + smooth + boundary).Edges) 'segment', 'arc', 'circle',\n"
+        "      'bspline' or 'polyline' (no curve fitted: 'curve_problems' says why)\n"
+        "  'patch_borders': {patch: [outer wire, hole wires...]} on the same edges;\n"
+        "      'open_patches': {patch: why its border is not closed}\n"
         "  'smooth_regions', 'smooth_thresholds': per smooth wire, its region and threshold\n"
         "  'thresholds': {region: [thresholds used, high to low]}\n"
         "  'regions', 'patches', 'labels', 'curvature': per input point (-1 / NaN outside\n"
@@ -159,7 +190,7 @@ Py::Object Module::extract(const Py::Tuple& args, const Py::Dict& keywords)
     options.progress = progress.callback();
     const featurelines::ExtractionResult r =
         extractCached(cloud.points, hashCloud(cloud.points), options);
-    return extractionDict(toOutputs(r, cloud.toWorld));
+    return extractionDict(toOutputs(r, cloud.points, cloud.toWorld));
 }
 
 Py::Object Module::makeExtraction(const Py::Tuple& args, const Py::Dict& keywords)

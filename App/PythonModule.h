@@ -24,10 +24,11 @@ public:
                                      const Py::Dict& keywords) override;
 
 private:
-    // Clouds: reading a file, the patches of an extraction as clouds.
+    // Clouds: reading a file, the patches of an extraction as clouds and with their borders.
     void addCloudFunctions();
     Py::Object readCloud(const Py::Tuple& args);
     Py::Object makePatchClouds(const Py::Tuple& args, const Py::Dict& keywords);
+    Py::Object patchBorders(const Py::Tuple& args, const Py::Dict& keywords);
 
     // Extraction: the lines of a cloud, the document object, the parameters, cleaning the lines.
     void addExtractionFunctions();

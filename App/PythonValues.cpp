@@ -198,4 +198,13 @@ Py::List floatList(const std::vector<double>& values)
     return list;
 }
 
+Py::List stringList(const std::vector<std::string>& values)
+{
+    Py::List list;
+    for (const std::string& value : values) {
+        list.append(Py::String(value));
+    }
+    return list;
+}
+
 } // namespace FeatureLines

@@ -49,5 +49,6 @@ template <class Container> Py::List intList(const Container& values)
 }
 
 Py::List floatList(const std::vector<double>& values);
+Py::List stringList(const std::vector<std::string>& values);
 
 } // namespace FeatureLines

@@ -25,6 +25,7 @@
 
 #include "FeatureLines/Extraction.h"
 #include "FeatureLines/cli/Arguments.h"
+#include "FeatureLines/cli/CurveOutput.h"
 #include "FeatureLines/cli/Inputs.h"
 #include "FeatureLines/cli/Json.h"
 #include "FeatureLines/cli/OutputFiles.h"
@@ -472,7 +473,8 @@ std::string regionsJson(const ExtractionResult& r)
 
 /// The lines file (--output): the input, its point count and the result.
 void writeLinesFile(const std::string& output, const std::string& input, Eigen::Index points,
-                    const ExtractionResult& r)
+                    const ExtractionResult& r, const CurveNetwork& net,
+                    const std::vector<PatchBorder>& borders)
 {
     using namespace json;
     Object result;
@@ -481,8 +483,27 @@ void writeLinesFile(const std::string& output, const std::string& input, Eigen::
         .add("spacing", number(r.spacing))
         .add("lines", linesJson(r))
         .add("junctions", pointsJson(r.junctions))
-        .add("regions", regionsJson(r));
+        .add("regions", regionsJson(r))
+        .add("network", networkJson(net, borders));
     writeWhole(output, result.str() + "\n");
+}
+
+/// "curves: 12 (segment 12, arc 0, circle 0, bspline 0), vertices 8, patches closed 6 of 6".
+std::string curveSummary(const CurveNetwork& net, const std::vector<PatchBorder>& borders)
+{
+    int kinds[4] = {0, 0, 0, 0};
+    for (const NetworkEdge& e : net.edges) {
+        ++kinds[static_cast<int>(e.curve.kind)];
+    }
+    int closed = 0;
+    for (const PatchBorder& b : borders) {
+        closed += b.closed() ? 1 : 0;
+    }
+    std::ostringstream out;
+    out << "curves: " << net.edges.size() << " (segment " << kinds[0] << ", arc " << kinds[1]
+        << ", circle " << kinds[2] << ", bspline " << kinds[3] << "), vertices "
+        << net.vertices.rows() << ", patches closed " << closed << " of " << borders.size();
+    return out.str();
 }
 
 /// The labels file (--labels): per input point its region, patch, label and curvature; -1
@@ -522,6 +543,8 @@ struct ExtractTarget
     std::string input;
     std::string lines;
     std::string labels;
+    /// With --curves: the fitted curves as polylines, OBJ or PLY by its extension.
+    std::string curves;
 };
 
 /// How progress is shown (Progress.h): not at all, rewritten in place, or line by line.
@@ -585,7 +608,11 @@ std::vector<ExtractTarget> extractTargets(const Arguments& a)
     const bool batch =
         a.positional().size() > 1 || std::filesystem::is_directory(a.positional()[0], error);
     if (!batch) {
-        return {{a.positional()[0], a.text("--output"), a.text("--labels")}};
+        const std::string curves = a.text("--curves");
+        if (!curves.empty() && curves != "-") {
+            curveFileFormat(curves);
+        }
+        return {{a.positional()[0], a.text("--output"), a.text("--labels"), curves}};
     }
     const std::vector<std::string> inputs = expandInputs(a.positional());
     if (std::find(inputs.begin(), inputs.end(), "-") != inputs.end()) {
@@ -594,12 +621,17 @@ std::vector<ExtractTarget> extractTargets(const Arguments& a)
     const std::filesystem::path linesFolder = batchFolder(a, "--output", "lines files");
     const std::filesystem::path labelsFolder =
         a.has("--labels") ? batchFolder(a, "--labels", "labels files") : std::filesystem::path();
+    const std::filesystem::path curvesFolder =
+        a.has("--curves") ? batchFolder(a, "--curves", "curve files") : std::filesystem::path();
     std::vector<ExtractTarget> targets;
     for (const std::string& input : inputs) {
         const std::string name = std::filesystem::path(input).stem().string();
         ExtractTarget t{input, (linesFolder / (name + ".json")).string(), {}};
         if (a.has("--labels")) {
             t.labels = (labelsFolder / (name + ".labels.txt")).string();
+        }
+        if (a.has("--curves")) {
+            t.curves = (curvesFolder / (name + ".obj")).string();
         }
         for (const ExtractTarget& other : targets) {
             if (other.lines == t.lines) {
@@ -620,6 +652,9 @@ void checkTargets(const std::vector<ExtractTarget>& targets)
         std::vector<OutputFile> outputs{{"--output", t.lines}};
         if (!t.labels.empty()) {
             outputs.push_back({"--labels", t.labels});
+        }
+        if (!t.curves.empty()) {
+            outputs.push_back({"--curves", t.curves});
         }
         checkOutputs(t.input, outputs);
         for (const ExtractTarget& other : targets) {
@@ -658,13 +693,23 @@ std::string extractOne(const Arguments& a, const ExtractTarget& t, ExtractionOpt
     if (mode != ProgressMode::None) {
         report.finish();
     }
-    writeLinesFile(t.lines, t.input, cloud.rows(), r);
+    // The lines as CAD geometry: fitted curves on shared vertices, the patches' borders.
+    const CurveNetwork net = fitCurveNetwork(r);
+    const std::vector<PatchBorder> borders = patchBorders(net, r, cloud);
+    writeLinesFile(t.lines, t.input, cloud.rows(), r, net, borders);
     if (!t.labels.empty()) {
         writeLabelsFile(t.labels, r);
     }
+    if (!t.curves.empty()) {
+        // Half a spacing between samples: a curve's polyline stays within a small fraction of
+        // a spacing of it.
+        const CurveFileFormat format =
+            t.curves == "-" ? CurveFileFormat::Obj : curveFileFormat(t.curves);
+        writeWhole(t.curves, curveFileText(net, 0.5 * r.spacing, format));
+    }
     return lineSummary(r) + (r.lines.empty() ? "\nno feature lines: the cloud has no sharp edge, "
                                                "boundary or curvature valley"
-                                             : "");
+                                             : "\n" + curveSummary(net, borders));
 }
 
 int runExtract(const Arguments& a)
@@ -678,7 +723,8 @@ int runExtract(const Arguments& a)
         const ExtractTarget& t = targets.front();
         const std::string summary = extractOne(a, t, options, format, mode);
         // A result on standard output keeps it clean: the summary goes to standard error.
-        (t.lines == "-" || t.labels == "-" ? std::cerr : std::cout) << summary << "\n";
+        (t.lines == "-" || t.labels == "-" || t.curves == "-" ? std::cerr : std::cout)
+            << summary << "\n";
         return 0;
     }
     // A batch: every input is tried; one summary line each, and the exit code 1 when any failed.
@@ -749,19 +795,26 @@ const std::vector<Command>& commands()
          runThreshold},
         {"extract",
          "closed feature lines: sharp edges, smooth edges (fillet borders) and boundary",
-         "INPUT... -o LINES.json|FOLDER [--labels FILE|FOLDER] [--thresholds T1,T2 | "
+         "INPUT... -o LINES.json|FOLDER [--labels FILE|FOLDER] [--curves FILE|FOLDER] "
+         "[--thresholds T1,T2 | "
          "--threshold-mode M] [--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N] "
          "[--progress [--progress-every S] | --quiet]",
          {{"--output", "FILE",
            "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
            "\"points\"}], \"junctions\", \"regions\" (per region: its noise, thresholds used, "
-           "curvature scale and the coarser scales weighed, scale_trials)}; - for standard "
-           "output. With several INPUTs or a folder: the folder that gets NAME.json for each "
+           "curvature scale and the coarser scales weighed, scale_trials), \"network\" (the "
+           "fitted curves: vertices, edges, patch_borders)}; - for standard output. With several "
+           "INPUTs or a folder: the folder that gets NAME.json for each "
            "input NAME.ext, one summary line each, exit 1 when any failed",
            "-o"},
           {"--labels", "FILE",
            "also write per input point: smooth region, patch, Sec. 3 label, curvature (-1: no "
            "region, patch or label); with several inputs the folder for NAME.labels.txt"},
+          {"--curves", "FILE",
+           "also write the fitted curves as polylines sampled every half spacing, sharing the "
+           "network's vertices: FILE.obj (v and l records) or FILE.ply (vertex and edge "
+           "elements), for CloudCompare, MeshLab or Blender; - for OBJ on standard output; "
+           "with several inputs the folder for NAME.obj"},
           {"--threshold-mode", "M",
            "automatic (every significant valley per region), first (the first threshold only), "
            "explicit (--thresholds); default automatic"},

@@ -96,17 +96,49 @@ struct PatchBorder
 
 struct CurveFitOptions
 {
-    /// The fitting tolerance in point spacings (ExtractionResult::spacing), raised to twice the
-    /// noise estimated from the polyline's scatter where that is larger.
+    /// The fitting tolerance in point spacings (ExtractionResult::spacing): every polyline
+    /// vertex within it of its curve. Raised to noiseFactor times the noise where that is
+    /// larger: the cloud's (the median of RegionReport::noise) or the polyline's own scatter
+    /// (polylineScatter in CurveFit.h).
     double tolerance = 0.25;
+    /// Multiple of the noise the tolerance is raised to (default 6).
+    double noiseFactor = 6.0;
+    /// A free line end within this many spacings of a vertex or of another line is joined to
+    /// it there (default 2).
+    double joinDistance = 2.0;
+    /// Junctions closer than this many spacings are one vertex (default 1).
+    double mergeDistance = 1.0;
+    /// Polyline vertices within this many spacings of an edge's end vertex are left out of its
+    /// fit: the lines bend on their last spacing or two into a junction (default 2).
+    double vertexGap = 2.0;
+    /// Two edges meeting alone at a vertex whose direction turns there by less than this many
+    /// degrees run on with one tangent (default 30).
+    double smoothAngle = 30.0;
 };
 
 /// The network of fitted curves of `result`'s lines.
 CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options = {});
 
-/// Every patch's border in `network`: P  #P by 3 the cloud the result came from (the patch ids
-/// of result.patch are per row of P).
+struct PatchBorderOptions
+{
+    /// An edge borders a patch when, at `share` or more of its samples (one per spacing, those
+    /// within `reach` or a quarter of its length of its vertices left out), the patch's nearest
+    /// point is within `reach` spacings and within `margin` spacings of the nearest point of any
+    /// patch (a sharp edge's band of patch -1 is about 3 spacings wide on either side; a patch
+    /// across a narrow chamfer is farther). Defaults 8, 1.5 and 0.5.
+    double reach = 8.0;
+    double margin = 1.5;
+    double share = 0.5;
+    /// Patches of fewer points are specks between two thresholds, not surfaces: no border is
+    /// returned for them (default 20).
+    int minPoints = 20;
+};
+
+/// Every patch's border in `network`, one per patch id of result.patch (of minPoints or more
+/// points) in increasing order:
+/// P  #P by 3 the cloud the result came from (result.patch holds one id per row of P).
 std::vector<PatchBorder> patchBorders(const CurveNetwork& network, const ExtractionResult& result,
-                                      const PointMatrix& points);
+                                      const PointMatrix& points,
+                                      const PatchBorderOptions& options = {});
 
 } // namespace featurelines

@@ -8,6 +8,7 @@
 // (ScanSampling.h) and aggregated per family, model and noise (RandomBenchmark.h). Method and
 // results: docs/ACCURACY.md.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -27,6 +28,8 @@
 #include <vector>
 
 #include "FeatureLines/Extraction.h"
+#include "FeatureLines/curves/CurveFit.h"
+#include "FeatureLines/curves/CurveNetwork.h"
 
 #include "Baselines.h"
 #include "CadFiles.h"
@@ -48,19 +51,63 @@ namespace {
 // (--max-scale changes the one option a robustness run may set).
 featurelines::ExtractionOptions extractionOptions;
 
-std::optional<std::vector<TypedPolyline>> runFeatureLines(const PointMatrix& cloud)
+/// The extraction's lines, and the same lines as CAD geometry (issue 18): the fitted curve
+/// network and its patches' borders.
+struct FeatureLinesRun
+{
+    std::vector<TypedPolyline> lines;
+    featurelines::CurveNetwork network;
+    std::vector<featurelines::PatchBorder> borders;
+};
+
+std::optional<FeatureLinesRun> runFeatureLines(const PointMatrix& cloud)
 {
     const featurelines::ExtractionResult result =
         featurelines::extractFeatureLines(cloud, extractionOptions);
-    std::vector<TypedPolyline> lines;
+    FeatureLinesRun run;
     for (const featurelines::FeatureLine& l : result.lines) {
         TypedPolyline t;
         t.type = lineTypeFromName(featurelines::lineTypeName(l.type));
         t.closed = l.closed;
         t.points = l.points;
-        lines.push_back(std::move(t));
+        run.lines.push_back(std::move(t));
     }
-    return lines;
+    run.network = featurelines::fitCurveNetwork(result);
+    run.borders = featurelines::patchBorders(run.network, result, cloud);
+    return run;
+}
+
+/// How the fitted curves sit on the true edges: their LineQuality (distances of their samples
+/// to the true edges, edges per true edge), the count of each kind, and the share of patches
+/// with a closed border.
+struct CurveQuality
+{
+    LineQuality quality;
+    int edges = 0;
+    std::array<int, 4> kinds{};
+    int patches = 0;
+    int closedPatches = 0;
+};
+
+CurveQuality measureCurves(const FeatureLinesRun& run, const std::vector<TypedPolyline>& truth,
+                           const LineScoreOptions& scoring)
+{
+    CurveQuality q;
+    std::vector<TypedPolyline> curves;
+    for (const featurelines::NetworkEdge& e : run.network.edges) {
+        TypedPolyline t;
+        t.type = lineTypeFromName(featurelines::lineTypeName(e.type));
+        t.points = featurelines::sampleCurve(e.curve, scoring.resampleFactor * scoring.spacing);
+        curves.push_back(std::move(t));
+        ++q.kinds[static_cast<size_t>(e.curve.kind)];
+    }
+    q.edges = static_cast<int>(curves.size());
+    q.quality = measureLineQuality(curves, truth, scoring);
+    for (const featurelines::PatchBorder& b : run.borders) {
+        ++q.patches;
+        q.closedPatches += b.closed() ? 1 : 0;
+    }
+    return q;
 }
 // ---------------------------------------------------------------------------------------------
 
@@ -537,6 +584,8 @@ struct Row
     /// For line detectors: F1 at a tolerance of one spacing, and LineQuality.
     LineScore scoreAtOneSpacing;
     LineQuality quality;
+    /// For the extraction: its fitted curves.
+    std::optional<CurveQuality> curves;
 };
 
 void printTable(const std::vector<std::string>& header,
@@ -727,6 +776,17 @@ Row lineRow(const std::string& name, const std::string& noise, const std::string
     return row;
 }
 
+/// The extraction's row: its lines scored (lineRow) and its fitted curves measured.
+Row featureLinesRow(const std::string& name, const std::string& noise, const FeatureLinesRun& run,
+                    const SampledPart& s)
+{
+    Row row = lineRow(name, noise, "featurelines", run.lines, s);
+    LineScoreOptions scoring;
+    scoring.spacing = s.spacing;
+    row.curves = measureCurves(run, s.truth, scoring);
+    return row;
+}
+
 /// The per-point baselines on one cloud: a row at each fixed threshold, and the sweeps over
 /// the measured parts.
 void runBaselines(const std::string& name, const std::string& noise, const std::string& group,
@@ -791,10 +851,10 @@ void measurePart(const CadShape& part, const std::string& group, unsigned seed,
 
         // The project's extraction.
         const auto start = std::chrono::steady_clock::now();
-        const auto lines = runFeatureLines(cloud.points);
+        const auto run = runFeatureLines(cloud.points);
         const double extractionSeconds = seconds(start);
-        Row row = lines ? lineRow(part.name, noise, "featurelines", *lines, s)
-                        : Row(part.name, noise, "featurelines");
+        Row row = run ? featureLinesRow(part.name, noise, *run, s)
+                      : Row(part.name, noise, "featurelines");
         row.seconds = extractionSeconds;
         row.group = group;
         results.rows.push_back(row);
@@ -908,6 +968,37 @@ void printLineQuality(const Results& results, bool markdown)
                table, markdown);
 }
 
+/// Per part the extraction's fitted curves (issue 18): their count by kind, their distance to
+/// the true edges (samples within the tolerance of one), edges per true edge, and the share
+/// of the patches whose border is closed.
+void printCurveQuality(const Results& results, bool markdown)
+{
+    std::vector<std::vector<std::string>> table;
+    for (const Row& r : results.rows) {
+        if (!r.curves) {
+            continue;
+        }
+        const CurveQuality& c = *r.curves;
+        table.push_back({r.shape, r.noise, std::to_string(c.edges), std::to_string(c.kinds[0]),
+                         std::to_string(c.kinds[1]), std::to_string(c.kinds[2]),
+                         std::to_string(c.kinds[3]), formatNumber(c.quality.medianDistance, 2),
+                         formatNumber(c.quality.p95Distance, 2),
+                         formatNumber(c.quality.linesPerTrueEdge, 2),
+                         c.patches ? formatNumber(double(c.closedPatches) / c.patches) : "-",
+                         std::to_string(c.closedPatches) + "/" + std::to_string(c.patches)});
+    }
+    if (table.empty()) {
+        return;
+    }
+    if (!markdown) {
+        std::cout << "Fitted curves (distances in spacings, from the curves' samples within the "
+                     "tolerance of a true edge)\n";
+    }
+    printTable({"part", "noise", "edges", "segment", "arc", "circle", "bspline", "median dist",
+                "p95 dist", "edges/true edge", "closed patches", "closed/patches"},
+               table, markdown);
+}
+
 void printSweeps(const Results& results, bool markdown)
 {
     std::vector<std::vector<std::string>> sweepRows;
@@ -1010,8 +1101,8 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     }
 
     const auto start = std::chrono::steady_clock::now();
-    const auto lines = runFeatureLines(cloud.points);
-    Row row = lineRow(name, noise, "featurelines", *lines, s);
+    const auto run = runFeatureLines(cloud.points);
+    Row row = featureLinesRow(name, noise, *run, s);
     row.seconds = seconds(start);
     row.group = record.group;
     results.rows.push_back(row);
@@ -1051,6 +1142,7 @@ int runRandom(const Arguments& args)
         printScores(results, args.markdown);
     }
     printLineQuality(results, args.markdown);
+    printCurveQuality(results, args.markdown);
     for (const TextTable& table : randomAggregateTables(records)) {
         printTextTable(table, args.markdown);
     }
@@ -1101,6 +1193,7 @@ int run(const Arguments& args)
                results.partRows, args.markdown);
     printScores(results, args.markdown);
     printLineQuality(results, args.markdown);
+    printCurveQuality(results, args.markdown);
     printSweeps(results, args.markdown);
     if (!args.demoCloud.empty()) {
         writeDemoCloud(args);

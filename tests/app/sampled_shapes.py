@@ -55,6 +55,27 @@ def cube(edge, spacing, seed):
     return points
 
 
+def capped_cylinder(radius, height, spacing, seed):
+    """The closed cylinder of the given radius around the z axis, z in [-height/2, height/2]:
+    the side and two flat discs, which meet at two sharp circular rims of that radius."""
+    rnd = random.Random(seed)
+    points = []
+    around, along = _cells(2 * math.pi * radius, spacing), _cells(height, spacing)
+    for i in range(around):
+        phi = (i + 0.5 + rnd.uniform(-JITTER, JITTER)) / around * 2 * math.pi
+        for j in range(along):
+            z = ((j + 0.5 + rnd.uniform(-JITTER, JITTER)) / along - 0.5) * height
+            points.append((radius * math.cos(phi), radius * math.sin(phi), z))
+    n = _cells(2 * radius, spacing)
+    for z in (height / 2, -height / 2):
+        for u in _grid(n, rnd):
+            for v in _grid(n, rnd):
+                x, y = (u - 0.5) * 2 * radius, (v - 0.5) * 2 * radius
+                if x * x + y * y < radius * radius:
+                    points.append((x, y, z))
+    return points
+
+
 def rounded_cube(edge, radius, spacing, seed):
     """The cube [-edge/2, edge/2]^3 with every edge and corner rounded to `radius`: six flat
     squares (curvature 0), twelve quarter-cylinder fillets (mean curvature 1/(2 radius)) and

@@ -338,12 +338,9 @@ def add_cloud(doc, points, name="Cloud"):
 
 
 def wire_centre(wire):
-    """Mean of a wire's vertices."""
-    points = [v.Point for v in wire.Vertexes]
-    c = FreeCAD.Vector()
-    for p in points:
-        c += p
-    return c * (1.0 / len(points))
+    """The centre of a wire's length (a fitted loop may have a single vertex, so the mean of
+    its vertices would lie on it, not inside it)."""
+    return wire.CenterOfMass
 
 
 # ---- Steps --------------------------------------------------------------------------------
