@@ -394,7 +394,11 @@ SplineFit fitWithKnots(const CurveFitInput& in, const PointMatrix& P, Eigen::Vec
             const double ua = std::max(0.0, u[i] - h), ub = std::min(1.0, u[i] + h);
             const Vec3 d = (splinePoint(f, c.poles, ub) - splinePoint(f, c.poles, ua)) / (ub - ua);
             if (d.squaredNorm() > 0) {
-                u[i] = std::clamp(u[i] + (row(P, i) - q).dot(d) / d.squaredNorm(), 0.0, 1.0);
+                const double moved = u[i] + (row(P, i) - q).dot(d) / d.squaredNorm();
+                // A periodic curve's parameter runs round: a point near the seam that moves
+                // past 1 or below 0 continues on the other side (clamped, it was stuck at the
+                // seam and drew knot after knot towards it).
+                u[i] = periodic ? moved - std::floor(moved) : std::clamp(moved, 0.0, 1.0);
             }
         }
     }
@@ -606,6 +610,7 @@ FittedCurve fitBSpline(const CurveFitInput& in)
         periodic ? std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0} : std::vector<double>{0.0, 1.0};
     const int poleLimit = std::max(periodic ? 4 : 4, static_cast<int>(P.rows()) / 2);
     SplineFit fit = fitWithKnots(in, P, u, knots);
+    constexpr int minPointsToSplit = 4;
     while (fit.curve.maxDeviation > in.tolerance) {
         // The spans whose worst point is out of tolerance and at least half as far out as the
         // worst of all: a knot each (more than one per round keeps long lines quick).
@@ -614,13 +619,19 @@ FittedCurve fitBSpline(const CurveFitInput& in)
         for (size_t k = 0; k + 1 < knots.size(); ++k) {
             const double a = knots[k], b = knots[k + 1];
             Eigen::Index worst = -1;
+            int inSpan = 0;
             for (Eigen::Index i = 0; i < P.rows(); ++i) {
-                if (fit.u[i] >= a && fit.u[i] < b && fit.distance[i] > splitFrom &&
-                    (worst < 0 || fit.distance[i] > fit.distance[worst])) {
-                    worst = i;
+                if (fit.u[i] >= a && fit.u[i] < b) {
+                    ++inSpan;
+                    if (fit.distance[i] > splitFrom &&
+                        (worst < 0 || fit.distance[i] > fit.distance[worst])) {
+                        worst = i;
+                    }
                 }
             }
-            if (worst < 0) {
+            // A span is split only where both halves keep points to fit: a knot between too
+            // few points adds a pole that nothing holds in place.
+            if (worst < 0 || inSpan < minPointsToSplit) {
                 continue;
             }
             // At the worst point, unless that is close to a knot: then mid-span.
@@ -647,6 +658,27 @@ FittedCurve fitBSpline(const CurveFitInput& in)
     return c;
 }
 
+/// The segment between an arc's ends when the arc turns by less than flatArcDegrees and the
+/// segment holds twice the tolerance (RMS within it, no point beyond three times it). A long
+/// straight edge whose line is placed a fraction of a spacing off at its ends bows by that much
+/// between its vertices, and the arc through them then holds where the segment just fails: a
+/// radius of thousands of spacings, never a designed arc.
+std::optional<FittedCurve> straightInstead(const FittedCurve& arc, const CurveFitInput& in)
+{
+    constexpr double flatArcDegrees = 10.0;
+    const Vec3 a = arc.start - arc.centre, b = arc.end - arc.centre;
+    double turn = std::atan2(a.cross(b).norm(), a.dot(b));
+    if (a.cross(b).dot(arc.axis) < 0.0) {
+        turn = 2.0 * M_PI - turn;
+    }
+    if (turn * 180.0 / M_PI >= flatArcDegrees) {
+        return std::nullopt;
+    }
+    CurveFitInput relaxed = in;
+    relaxed.tolerance = 2.0 * in.tolerance;
+    return fitSegment(relaxed);
+}
+
 FittedCurve fitCurve(const CurveFitInput& in)
 {
     if (!(in.tolerance > 0)) {
@@ -656,6 +688,9 @@ FittedCurve fitCurve(const CurveFitInput& in)
         return *segment;
     }
     if (auto arc = fitArc(in)) {
+        if (auto straight = straightInstead(*arc, in)) {
+            return *straight;
+        }
         return *arc;
     }
     if (auto circle = fitCircle(in)) {

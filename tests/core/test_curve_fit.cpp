@@ -159,6 +159,21 @@ TEST(CurveFit, AClosedLoopOutOfPlaneGivesAPeriodicBSpline)
     EXPECT_LE(distancesToCurve(c, truth, 0.005).maxCoeff(), tolerance * 1.5);
 }
 
+TEST(CurveFit, AStraightEdgeBowedByItsLinesPlacementIsASegmentNotAHugeArc)
+{
+    // 67 long, bowed by 0.25 at its middle (a line placed a third of a spacing off at its
+    // ends), tolerance 0.19: the arc through the ends would hold it, with a radius of 2 200.
+    const auto bowed = [](double t) {
+        return Eigen::Vector3d(t, 0.25 * (1.0 - (2.0 * t / 67.0 - 1.0) * (2.0 * t / 67.0 - 1.0)),
+                               0.0);
+    };
+    const CurveFitInput in = input(pointsOf(bowed, 0, 67, 90), 0.19);
+    ASSERT_FALSE(fitSegment(in)) << "the segment alone does not hold: the test is not empty";
+    ASSERT_TRUE(fitArc(in));
+    const FittedCurve c = fitCurve(in);
+    EXPECT_EQ(c.kind, CurveKind::Segment) << "radius " << c.radius;
+}
+
 TEST(CurveFit, AGivenEndTangentIsKept)
 {
     const auto bend = [](double t) { return Eigen::Vector3d(t, 0.1 * t * t * t, 0.0); };

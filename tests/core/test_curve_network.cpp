@@ -58,6 +58,21 @@ void expectBoxNetwork(const CurveNetwork& net, double edge, double spacing, doub
     expectCurvesOnVertices(net);
 }
 
+/// Every edge's curve stays near the points it was fitted to, all along (a curve can hold
+/// its points and still swing out between them): each sample within `reach` of them.
+void expectCurvesStayOnTheirPoints(const CurveNetwork& net, double reach)
+{
+    for (const NetworkEdge& e : net.edges) {
+        const PointMatrix samples = sampleCurve(e.curve, 0.25 * reach);
+        for (Eigen::Index i = 0; i < samples.rows(); ++i) {
+            const double nearest =
+                (e.points.rowwise() - samples.row(i)).rowwise().norm().minCoeff();
+            ASSERT_LE(nearest, reach) << curveKindName(e.curve.kind) << " edge of line " << e.line
+                                      << " leaves its points at sample " << i;
+        }
+    }
+}
+
 /// Every loop runs end to start through shared vertices and closes.
 void expectLoopsChain(const CurveNetwork& net, const PatchBorder& b)
 {
@@ -211,6 +226,7 @@ TEST(CurveNetwork, ARoundedCubesFilletBordersAreAFewSmoothCurves)
         }
     }
     expectCurvesOnVertices(net);
+    expectCurvesStayOnTheirPoints(net, 3 * h);
     // Every patch closed: the faces and corners by one loop each, the fillets between them
     // by all fourteen.
     const std::vector<PatchBorder> borders = patchBorders(net, r, s.points);
