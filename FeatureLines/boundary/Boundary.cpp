@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The boundary: points with a wide empty sector around them, chained by the cluster graph.
 #include "FeatureLines/boundary/Boundary.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 #include <algorithm>
 #include <array>
@@ -20,11 +21,6 @@ constexpr double pi = 3.14159265358979323846;
 /// The rings of neighbours a gap is confirmed over (BoundaryOptions::confirmationReach): the
 /// point's neighbours, theirs and theirs again, as far as the reach.
 constexpr int confirmationRings = 3;
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 /// A number in [0, 4) that grows with the angle of (x, y) from +x, anticlockwise (the
 /// "diamond angle"): it orders directions like the angle does, without trigonometry.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/curvature/Curvature.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +23,6 @@ constexpr int minimumNeighbours = 5;
 /// their largest diagonal entry. The coordinates are scaled to the unit disc, so this is a pure
 /// rounding level.
 constexpr double degeneratePivot = 1e-12;
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 /// Solves the normal equations M c = r of the quadric fit, M symmetric positive definite with
 /// its upper triangle packed row by row in m (21 entries), by a Cholesky factorisation without

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/neighbourhoods/BalancedNeighbourhoods.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 #include <algorithm>
 #include <numeric>
@@ -14,11 +15,6 @@
 namespace featurelines {
 
 namespace {
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 /// The direction of point i's row: the principal axis of it and its neighbours.
 Eigen::Vector3d rowDirection(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i)

@@ -20,11 +20,6 @@ namespace featurelines {
 
 namespace {
 
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
-
 /// The occupied cells of one level of the keys' octree (cubes 2^level steps wide, see
 /// MortonGrid), in key order: each cell's code (key >> 3 level) and its run of rows, with a
 /// hash table from code to cell.

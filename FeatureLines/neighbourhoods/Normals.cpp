@@ -9,15 +9,11 @@
 #include <omp.h>
 
 #include "FeatureLines/support/HugePages.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 namespace featurelines {
 
 namespace {
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 /// The PCA normal, surface variation and spread of point i over its first k neighbours
 /// (variation and spread when given).

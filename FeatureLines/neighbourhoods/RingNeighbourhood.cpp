@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "FeatureLines/neighbourhoods/RingNeighbourhood.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,11 +61,6 @@ constexpr int firstCandidates = 8;
 /// above the rounding of the straightness test: a dropped candidate lies strictly inside the
 /// hull, so the hull, vertex for vertex, is that of all the candidates.
 constexpr double insideMargin = 1e-6;
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 /// A cheap monotone stand-in for atan2(y, x): increases with the angle over (-pi, pi], in
 /// [-2, 2].

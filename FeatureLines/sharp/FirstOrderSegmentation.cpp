@@ -12,17 +12,13 @@
 #include <omp.h>
 
 #include "FeatureLines/support/DisjointSets.h"
+#include "FeatureLines/support/IdleThreads.h"
 
 namespace featurelines {
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-int threadCount(int requested)
-{
-    return requested > 0 ? requested : omp_get_max_threads();
-}
 
 void requireAngle(double degrees, const char* name)
 {

@@ -5,6 +5,11 @@
 
 namespace featurelines {
 
+int threadCount(int requested)
+{
+    return requested > 0 ? requested : omp_get_max_threads();
+}
+
 void releaseIdleThreads()
 {
     // OpenMP 5.0; inside a parallel region it fails without effect.
