@@ -16,21 +16,6 @@
 
 namespace featurelines::cli {
 
-inline std::string vectorJson(const Eigen::Vector3d& v)
-{
-    return "[" + json::number(v.x()) + ", " + json::number(v.y()) + ", " + json::number(v.z()) +
-           "]";
-}
-
-inline std::string rowsJson(const PointMatrix& P)
-{
-    std::string out = "[";
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        out += (i ? ", " : "") + vectorJson(P.row(i).transpose());
-    }
-    return out + "]";
-}
-
 /// One edge: its line, vertices, curve kind and parameters, and deviations (model units).
 inline std::string networkEdgeJson(const NetworkEdge& e)
 {
@@ -43,15 +28,15 @@ inline std::string networkEdgeJson(const NetworkEdge& e)
         .add("end_vertex", number(static_cast<long>(e.endVertex)))
         .add("kind", string(curveKindName(c.kind)));
     if (c.kind == CurveKind::Arc || c.kind == CurveKind::Circle) {
-        edge.add("centre", vectorJson(c.centre))
-            .add("axis", vectorJson(c.axis))
+        edge.add("centre", point(c.centre))
+            .add("axis", point(c.axis))
             .add("radius", number(c.radius));
     }
     if (c.kind == CurveKind::BSpline) {
         std::vector<long> multiplicities(c.multiplicities.begin(), c.multiplicities.end());
         edge.add("degree", number(static_cast<long>(c.degree)))
             .add("periodic", c.periodic ? "true" : "false")
-            .add("poles", rowsJson(c.poles))
+            .add("poles", points(c.poles))
             .add("knots", array(c.knots))
             .add("multiplicities", array(multiplicities));
     }
@@ -100,7 +85,7 @@ inline std::string networkJson(const CurveNetwork& net, const std::vector<PatchB
     }
     patches += borders.empty() ? "]" : "\n  ]";
     return json::Object()
-        .add("vertices", rowsJson(net.vertices))
+        .add("vertices", json::points(net.vertices))
         .add("edges", edges)
         .add("patch_borders", patches)
         .str();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// Just enough JSON output for the featurelines tool: strings, numbers, arrays of numbers.
+// Just enough JSON output for the featurelines tool: strings, numbers, arrays of numbers and
+// of points.
 #pragma once
 
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "FeatureLines/PointCloud.h"
 #include "FeatureLines/cli/Arguments.h"
 
 namespace featurelines::cli::json {
@@ -61,6 +63,22 @@ template <typename T> std::string array(const std::vector<T>& values)
     std::string out = "[";
     for (std::size_t i = 0; i < values.size(); ++i) {
         out += (i ? ", " : "") + number(values[i]);
+    }
+    return out + "]";
+}
+
+/// A point as [x, y, z].
+inline std::string point(const Eigen::Vector3d& p)
+{
+    return "[" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + "]";
+}
+
+/// The rows of P as an array of points.
+inline std::string points(const PointMatrix& P)
+{
+    std::string out = "[";
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        out += (i ? ", " : "") + point(P.row(i).transpose());
     }
     return out + "]";
 }

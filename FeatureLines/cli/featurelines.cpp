@@ -399,16 +399,6 @@ ExtractionOptions extractionOptions(const Arguments& a)
     return o;
 }
 
-std::string pointsJson(const PointMatrix& P)
-{
-    std::string out = "[";
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        out += (i ? ", [" : "[") + json::number(P(i, 0)) + ", " + json::number(P(i, 1)) + ", " +
-               json::number(P(i, 2)) + "]";
-    }
-    return out + "]";
-}
-
 /// The lines of the result as a JSON array, one line per row.
 std::string linesJson(const ExtractionResult& r)
 {
@@ -425,7 +415,7 @@ std::string linesJson(const ExtractionResult& r)
             line.add("region", number(static_cast<long>(l.region)))
                 .add("threshold", number(l.threshold));
         }
-        line.add("points", pointsJson(l.points));
+        line.add("points", json::points(l.points));
         lines += (i ? ",\n  " : "\n  ") + line.str();
     }
     return lines + "\n]";
@@ -482,7 +472,7 @@ void writeLinesFile(const std::string& output, const std::string& input, Eigen::
         .add("points", number(static_cast<long>(points)))
         .add("spacing", number(r.spacing))
         .add("lines", linesJson(r))
-        .add("junctions", pointsJson(r.junctions))
+        .add("junctions", json::points(r.junctions))
         .add("regions", regionsJson(r))
         .add("network", networkJson(net, borders));
     writeWhole(output, result.str() + "\n");
