@@ -43,6 +43,14 @@ struct FeatureLine
     int region = -1;
     int level = -1;
     double threshold = std::numeric_limits<double>::quiet_NaN();
+    /// Sharp lines: the angle between the two faces that meet on the line, in degrees, measured
+    /// inside the wedge they form (0-180: 90 for every edge of a box, convex or concave; near
+    /// 180 for a shallow crease); the median along the line of the faces' fitted planes. NaN
+    /// where no two faces were fitted, and for smooth and boundary lines.
+    double angle = std::numeric_limits<double>::quiet_NaN();
+    /// Smooth lines: the estimated radius of the blend the line borders (length unit); NaN
+    /// where none was estimated, and for sharp and boundary lines.
+    double blendRadius = std::numeric_limits<double>::quiet_NaN();
     /// Rows of ExtractionResult::junctions the ends sit on, -1 for none.
     int startJunction = -1;
     int endJunction = -1;
