@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Planes fitted to the points of one face, and where two of them meet: shared by the crease
+// placement and the typing by profile of the sharp stage.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace featurelines {
+
+struct Plane
+{
+    Eigen::Vector3d normal;
+    double offset; // normal . x = offset
+};
+
+/// Least-squares plane through `points` (principal component analysis), refitted once
+/// without the points farther than 2.5 times the RMS distance (points of the other face that
+/// the segmentation gave to this one) when at least minPoints remain.
+Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints);
+
+/// The point of the line {x : a.x = a.offset, b.x = b.offset} closest to c; the planes must not
+/// be parallel.
+Eigen::Vector3d closestOnIntersection(const Plane& a, const Plane& b, const Eigen::Vector3d& c);
+
+} // namespace featurelines
