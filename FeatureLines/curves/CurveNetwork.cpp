@@ -436,6 +436,14 @@ CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptio
     NetworkBuilder builder(result, options.joinDistance * spacing, options.mergeDistance * spacing);
     builder.cutLines();
     net.edges = builder.edges(options.vertexGap * spacing);
+    // A piece of fewer than two vertices, or a loop back to its vertex through fewer than two
+    // others (a line folded onto itself), is no curve.
+    net.edges.erase(std::remove_if(net.edges.begin(), net.edges.end(),
+                                   [](const NetworkEdge& e) {
+                                       return e.points.rows() <
+                                              (e.startVertex == e.endVertex ? 4 : 2);
+                                   }),
+                    net.edges.end());
     net.vertices.resize(static_cast<Eigen::Index>(builder.vertices.size()), 3);
     for (size_t v = 0; v < builder.vertices.size(); ++v) {
         net.vertices.row(static_cast<Eigen::Index>(v)) = builder.vertices[v].transpose();

@@ -310,3 +310,21 @@ TEST(CurveNetwork, ALineEndingOnAnotherLinesInteriorCutsItThere)
     }
     expectCurvesOnVertices(net);
 }
+
+TEST(CurveNetwork, ALineFoldedOntoItsOwnEndIsNoCurveAndNoFailure)
+{
+    // A three-vertex line from a vertex back to the same place (the sharp stage can leave such
+    // a stub where a junction's lines were joined): it is left out, the straight line kept.
+    ExtractionResult r;
+    r.spacing = 1.0;
+    r.junctions.resize(0, 3);
+    r.lines.push_back(openLine([](double t) { return Eigen::Vector3d(t, 0, 0); }, 0.0, 20.0, 21));
+    FeatureLine stub;
+    stub.type = LineType::Sharp;
+    stub.points.resize(3, 3);
+    stub.points << 20, 0, 0, 20.4, 0.3, 0, 20, 0, 0;
+    r.lines.push_back(stub);
+    const CurveNetwork net = fitCurveNetwork(r);
+    ASSERT_EQ(net.edges.size(), 1u);
+    EXPECT_EQ(net.edges[0].curve.kind, CurveKind::Segment);
+}
