@@ -324,7 +324,8 @@ RegionAnalysis analyseRegionsOf(const CloudGeometry& cloud, Neighbourhoods* spar
     }
     std::vector<Polyline> sharpLines;
     for (const Polyline& line : a.sharp.network.lines) {
-        if (line.label == sharpLineLabel) {
+        // A blend's borders divide the regions as its sharp line did.
+        if (line.label == sharpLineLabel || line.label == blendBorderLabel) {
             sharpLines.push_back(line);
         }
     }
@@ -385,9 +386,20 @@ struct DistinctPointResults
 /// The sharp and boundary lines, and their junctions, as the result's first lines.
 void addSharpLines(const SharpEdges& sharp, ExtractionResult& result)
 {
-    for (const Polyline& line : sharp.network.lines) {
-        result.lines.push_back(toFeatureLine(
-            line, line.label == boundaryLineLabel ? LineType::Boundary : LineType::Sharp, 0));
+    for (size_t l = 0; l < sharp.network.lines.size(); ++l) {
+        const Polyline& line = sharp.network.lines[l];
+        const LineType type = line.label == boundaryLineLabel  ? LineType::Boundary
+                              : line.label == blendBorderLabel ? LineType::Smooth
+                                                               : LineType::Sharp;
+        FeatureLine out = toFeatureLine(line, type, 0);
+        if (l < sharp.profiles.size()) {
+            if (type == LineType::Sharp) {
+                out.angle = sharp.profiles[l].angle;
+            } else if (type == LineType::Smooth) {
+                out.blendRadius = sharp.profiles[l].radius;
+            }
+        }
+        result.lines.push_back(std::move(out));
     }
     result.junctions = sharp.network.junctions;
 }

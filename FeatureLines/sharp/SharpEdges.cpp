@@ -125,7 +125,11 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     }
     const ClusterGraph graph = sharpGraph(P, N, spacing, result, options);
     result.counts = graph.counts;
-    result.network = placeOnCreases({P, N, graph, result, spacing}, options);
+    ProfileTyping typed = typeByProfile(P, normals, result.segmentation, result.isBoundary,
+                                        placeOnCreases({P, N, graph, result, spacing}, options),
+                                        spacing, options.profile);
+    result.network = std::move(typed.network);
+    result.profiles = std::move(typed.profiles);
     return result;
 }
 

@@ -7,6 +7,7 @@
 #include "FeatureLines/boundary/Boundary.h"
 #include "FeatureLines/network/ClusterGraph.h"
 #include "FeatureLines/sharp/FirstOrderSegmentation.h"
+#include "FeatureLines/sharp/ProfileTyping.h"
 
 namespace featurelines {
 
@@ -48,14 +49,20 @@ struct SharpEdgeOptions
     double maxCreaseShift = 2.5;
     /// Spacings: sharp lines are resampled at this step after placement; 0: not resampled (1).
     double resampleSpacing = 1.0;
+    /// The typing by profile after placement: blends become two border lines, every sharp
+    /// line gets its angle.
+    ProfileTypingOptions profile;
 };
 
 struct SharpEdges
 {
-    /// Sharp lines (label sharpLineLabel) and, for an open cloud, boundary lines (label
-    /// boundaryLineLabel), in one network: a sharp line reaching the boundary ends on a
-    /// junction of it.
+    /// Sharp lines (label sharpLineLabel), the borders of the blends typed by profile (label
+    /// blendBorderLabel) and, for an open cloud, boundary lines (label boundaryLineLabel), in
+    /// one network: a sharp line reaching the boundary ends on a junction of it.
     LineNetwork network;
+    /// Per line of `network`: what its profile told (ProfileTyping.h); empty when the network
+    /// did not come from extractSharpEdges().
+    std::vector<LineProfile> profiles;
     /// #P nonzero for the points of small clusters of the segmentation.
     std::vector<char> isSharpCandidate;
     /// #P nonzero for boundary points (all zero unless includeBoundary).

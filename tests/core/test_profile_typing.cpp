@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Typing by profile on an L of two perpendicular faces joined by a crease or by a round of
+// radius r: the round's sharp line becomes its two tangent lines, r is estimated, the crease
+// stays one sharp line whose angle is 90 degrees; a narrow third face on one side is no blend.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "FeatureLines/sharp/ProfileTyping.h"
+#include "FeatureLines/sharp/SharpEdges.h"
+
+using namespace featurelines;
+
+namespace {
+
+/// A profile in the (y, z) plane swept along x from 0 to `length`, sampled one spacing apart
+/// in x and along the profile.
+struct Swept
+{
+    PointMatrix P;
+    FirstOrderSegmentation seg;
+    LineNetwork network;
+};
+
+/// `profile` swept along x, one spacing apart, each profile point in its cluster (0: face A,
+/// z = 0; 1: face B, y = 0; 2: the small cluster between them). `noise` moves the faces'
+/// points along their normals (a seeded normal distribution); the sharp stage's line runs
+/// along the corner (y = z = 0).
+Swept sweep(const std::vector<Eigen::Vector2d>& profile, const std::vector<int>& cluster,
+            double length, double noise, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    std::vector<Eigen::Vector3d> points;
+    Swept s;
+    for (int x = 0; x <= static_cast<int>(length); ++x) {
+        for (size_t i = 0; i < profile.size(); ++i) {
+            // Normals of the faces: z for face A, y for face B, none added on the cut.
+            Eigen::Vector3d p(x, profile[i].x(), profile[i].y());
+            if (noise > 0.0) {
+                const double d = noise * gauss(rng);
+                if (cluster[i] == 0) {
+                    p.z() += d;
+                } else if (cluster[i] == 1) {
+                    p.y() += d;
+                }
+            }
+            points.push_back(p);
+            s.seg.cluster.push_back(cluster[i]);
+        }
+    }
+    s.P.resize(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) {
+        s.P.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    }
+    s.seg.clusterSize = {0, 0, 0};
+    for (int c : s.seg.cluster) {
+        ++s.seg.clusterSize[c];
+    }
+    s.seg.smallCluster = {0, 0, 1};
+    // The sharp stage's line: along the corner, one spacing apart.
+    Polyline line;
+    const int m = static_cast<int>(length) + 1;
+    line.points.resize(m, 3);
+    for (int x = 0; x < m; ++x) {
+        line.points.row(x) << x, 0.0, 0.0;
+    }
+    line.label = sharpLineLabel;
+    s.network.lines.push_back(line);
+    s.network.junctions.resize(0, 3);
+    return s;
+}
+
+/// Face A from y = -12 to -r, a quarter circle of radius r to (0, r), face B up to z = 12; the
+/// round's points are the small cluster.
+Swept roundedL(double r, double length, double noise = 0.0, unsigned seed = 1)
+{
+    std::vector<Eigen::Vector2d> profile;
+    std::vector<int> cluster;
+    auto add = [&](double y, double z, int face) {
+        profile.emplace_back(y, z);
+        cluster.push_back(face);
+    };
+    for (double y = -12.0; y < -r; y += 1.0) {
+        add(y, 0.0, 0);
+    }
+    const int arcSteps = std::max(1, static_cast<int>(std::round(r * M_PI / 2.0)));
+    for (int i = 0; i <= arcSteps && r > 0.0; ++i) {
+        const double t = -M_PI / 2.0 + (M_PI / 2.0) * i / arcSteps;
+        add(-r + r * std::cos(t), r + r * std::sin(t), 2);
+    }
+    for (double z = r + 1.0; z <= 12.0; z += 1.0) {
+        add(0.0, z, 1);
+    }
+    return sweep(profile, cluster, length, noise, seed);
+}
+
+/// The distance from p to the line along x through (y0, z0).
+double offLine(const Eigen::RowVector3d& p, double y0, double z0)
+{
+    return std::hypot(p(1) - y0, p(2) - z0);
+}
+
+TEST(ProfileTyping, RoundOfThreeSpacingsBecomesItsTwoTangentLines)
+{
+    const double r = 3.0;
+    const Swept s = roundedL(r, 40.0);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 2u);
+    ASSERT_EQ(t.profiles.size(), 2u);
+    EXPECT_TRUE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].radius, r, 0.3);
+    EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
+    // One border on face A at y = -r, the other on face B at z = r (away from the ends, where
+    // the borders run to the sharp line's end points).
+    int onA = 0;
+    int onB = 0;
+    for (const Polyline& border : t.network.lines) {
+        EXPECT_EQ(border.label, blendBorderLabel);
+        double a = 0.0;
+        double b = 0.0;
+        int inner = 0;
+        for (Eigen::Index i = 0; i < border.points.rows(); ++i) {
+            const Eigen::RowVector3d p = border.points.row(i);
+            if (p(0) < 8.0 || p(0) > 32.0) {
+                continue;
+            }
+            a = std::max(a, offLine(p, -r, 0.0));
+            b = std::max(b, offLine(p, 0.0, r));
+            ++inner;
+        }
+        ASSERT_GT(inner, 20);
+        onA += a < 0.25 ? 1 : 0;
+        onB += b < 0.25 ? 1 : 0;
+    }
+    EXPECT_EQ(onA, 1);
+    EXPECT_EQ(onB, 1);
+}
+
+TEST(ProfileTyping, RoundOfTwoSpacingsIsStillTwoBorders)
+{
+    const Swept s = roundedL(2.0, 40.0);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 2u);
+    EXPECT_TRUE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].radius, 2.0, 0.3);
+}
+
+TEST(ProfileTyping, CreaseStaysOneSharpLineWithItsAngle)
+{
+    const Swept s = roundedL(0.0, 40.0);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_EQ(t.network.lines[0].label, sharpLineLabel);
+    EXPECT_FALSE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].angle, 90.0, 1.0);
+    EXPECT_LT(t.profiles[0].radius, 0.5);
+    EXPECT_TRUE(t.network.lines[0].points.isApprox(s.network.lines[0].points));
+}
+
+TEST(ProfileTyping, NoiseOfAThirdSpacingKeepsBothAnswers)
+{
+    const Swept round = roundedL(3.0, 40.0, 0.3, 7);
+    const ProfileTyping a = typeByProfile(round.P, {}, round.seg, {}, round.network, 1.0);
+    ASSERT_EQ(a.network.lines.size(), 2u);
+    EXPECT_NEAR(a.profiles[0].radius, 3.0, 0.6);
+    const Swept crease = roundedL(0.0, 40.0, 0.3, 7);
+    const ProfileTyping b = typeByProfile(crease.P, {}, crease.seg, {}, crease.network, 1.0);
+    ASSERT_EQ(b.network.lines.size(), 1u);
+    EXPECT_FALSE(b.profiles[0].blend);
+    EXPECT_NEAR(b.profiles[0].angle, 90.0, 3.0);
+}
+
+TEST(ProfileTyping, NarrowThirdFaceOnOneSideIsNoBlend)
+{
+    // Face A stops at y = -1; a third face from there to (0, 3) on face B: a cut set back one
+    // spacing on A and three on B, which a round fits too but a flat cut fits far better.
+    std::vector<Eigen::Vector2d> profile;
+    std::vector<int> cluster;
+    for (double y = -12.0; y <= -1.0; y += 1.0) {
+        profile.emplace_back(y, 0.0);
+        cluster.push_back(y < -2.0 ? 0 : 2);
+    }
+    for (double t = 0.25; t < 1.0; t += 0.25) {
+        profile.emplace_back(-1.0 + t, 3.0 * t);
+        cluster.push_back(2);
+    }
+    for (double z = 3.0; z <= 12.0; z += 1.0) {
+        profile.emplace_back(0.0, z);
+        cluster.push_back(z > 4.0 ? 1 : 2);
+    }
+    const Swept s = sweep(profile, cluster, 40.0, 0.0, 1);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_FALSE(t.profiles[0].blend);
+    EXPECT_EQ(t.network.lines[0].label, sharpLineLabel);
+    // The flat cut was found where it is.
+    EXPECT_NEAR(t.profiles[0].setback[0], 1.0, 0.5);
+    EXPECT_NEAR(t.profiles[0].setback[1], 3.0, 0.5);
+}
+
+TEST(ProfileTyping, SplitBlendsOffKeepsTheLineButMeasuresIt)
+{
+    const Swept s = roundedL(3.0, 40.0);
+    ProfileTypingOptions o;
+    o.splitBlends = false;
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0, o);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_FALSE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].radius, 3.0, 0.3);
+}
+
+TEST(ProfileTyping, FacesOfOneClusterAreToldApartByTheirNormals)
+{
+    // Noise can let the region growing run round a blend, so that both faces are one cluster:
+    // the faces are then the cluster's two groups of normals.
+    Swept s = roundedL(3.0, 40.0);
+    NormalMatrix normals(s.P.rows(), 3);
+    for (Eigen::Index i = 0; i < s.P.rows(); ++i) {
+        const int c = s.seg.cluster[i];
+        normals.row(i) = c == 0   ? Eigen::RowVector3d(0, 0, 1)
+                         : c == 1 ? Eigen::RowVector3d(0, 1, 0)
+                                  : Eigen::RowVector3d(0, 1, -1).normalized();
+        if (c == 1) {
+            s.seg.cluster[i] = 0;
+        }
+    }
+    s.seg.clusterSize = {s.seg.clusterSize[0] + s.seg.clusterSize[1], 0, s.seg.clusterSize[2]};
+    EXPECT_EQ(typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0).profiles[0].stations, 0);
+    const ProfileTyping t = typeByProfile(s.P, normals, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 2u);
+    EXPECT_NEAR(t.profiles[0].radius, 3.0, 0.3);
+}
+
+TEST(ProfileTyping, OtherLinesAreCopied)
+{
+    Swept s = roundedL(3.0, 40.0);
+    s.network.lines[0].label = boundaryLineLabel;
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_EQ(t.network.lines[0].label, boundaryLineLabel);
+    EXPECT_EQ(t.profiles[0].stations, 0);
+}
+
+} // namespace
+
+// ---- End to end: the extraction of sampled rounded and sharp cubes ---------------------------
+
+#include "FeatureLines/Extraction.h"
+#include "SampledShapes.h"
+
+namespace {
+
+/// Distance from x to the nearest of the 24 tangent lines of the fillets of the cube
+/// [-a, a]^3 rounded to r: two coordinates at (+-a, +-(a - r)) in either order, the third
+/// within [-(a - r), a - r].
+double toFilletBorder(const Eigen::Vector3d& x, double a, double r)
+{
+    double best = std::numeric_limits<double>::infinity();
+    const double b = a - r;
+    for (int free = 0; free < 3; ++free) {
+        const int u = (free + 1) % 3;
+        const int v = (free + 2) % 3;
+        for (double su : {-1.0, 1.0}) {
+            for (double sv : {-1.0, 1.0}) {
+                for (int onFace = 0; onFace < 2; ++onFace) {
+                    Eigen::Vector3d p;
+                    p(free) = std::clamp(x(free), -b, b);
+                    p(u) = su * (onFace == 0 ? a : b);
+                    p(v) = sv * (onFace == 0 ? b : a);
+                    best = std::min(best, (x - p).norm());
+                }
+            }
+        }
+    }
+    return best;
+}
+
+/// The lengths of the sharp and smooth lines, the distance of every smooth vertex to the
+/// nearest fillet border, and the share of the borders' length (sampled every spacing, two
+/// spacings clear of their ends) that has a smooth vertex within a spacing.
+struct FilletScore
+{
+    double sharpLength = 0.0;
+    double smoothLength = 0.0;
+    std::vector<double> distance;
+    double covered = 0.0;
+    std::vector<double> radii;
+};
+
+FilletScore scoreFillets(const ExtractionResult& result, double a, double r)
+{
+    FilletScore score;
+    std::vector<Eigen::Vector3d> smooth;
+    for (const FeatureLine& line : result.lines) {
+        for (Eigen::Index i = 0; i + 1 < line.points.rows(); ++i) {
+            const double length = (line.points.row(i + 1) - line.points.row(i)).norm();
+            (line.type == LineType::Sharp ? score.sharpLength : score.smoothLength) += length;
+        }
+        if (line.type != LineType::Smooth) {
+            continue;
+        }
+        score.radii.push_back(line.blendRadius);
+        for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+            smooth.push_back(line.points.row(i).transpose());
+            score.distance.push_back(toFilletBorder(smooth.back(), a, r));
+        }
+    }
+    std::sort(score.distance.begin(), score.distance.end());
+    int samples = 0;
+    int hit = 0;
+    const double b = a - r;
+    for (int free = 0; free < 3; ++free) {
+        for (double su : {-1.0, 1.0}) {
+            for (double sv : {-1.0, 1.0}) {
+                for (int onFace = 0; onFace < 2; ++onFace) {
+                    for (double t = -b + 2.0; t <= b - 2.0; t += 1.0) {
+                        Eigen::Vector3d p;
+                        p(free) = t;
+                        p((free + 1) % 3) = su * (onFace == 0 ? a : b);
+                        p((free + 2) % 3) = sv * (onFace == 0 ? b : a);
+                        ++samples;
+                        for (const Eigen::Vector3d& q : smooth) {
+                            if ((q - p).norm() <= 1.0) {
+                                ++hit;
+                                break;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    score.covered = static_cast<double>(hit) / samples;
+    return score;
+}
+
+TEST(ProfileTypingExtraction, FilletsOfTwoSpacingsGiveTwoSmoothBordersEach)
+{
+    const double a = 15.0;
+    const double r = 2.0;
+    const shapes::Sample s = shapes::roundedCube(2.0 * a, r, 1.0, 3);
+    const FilletScore score = scoreFillets(extractFeatureLines(s.points), a, r);
+    // No crease on the part; both borders of all twelve fillets traced, on the border.
+    EXPECT_LT(score.sharpLength, 0.05 * score.smoothLength);
+    EXPECT_GT(score.covered, 0.9);
+    ASSERT_FALSE(score.distance.empty());
+    EXPECT_LT(score.distance[score.distance.size() / 2], 0.3);
+    for (double radius : score.radii) {
+        EXPECT_GT(radius, 0.7 * r);
+        EXPECT_LT(radius, 1.5 * r);
+    }
+}
+
+TEST(ProfileTypingExtraction, NoisyFilletsOfThreeSpacingsStillGiveTheirBorders)
+{
+    const double a = 15.0;
+    const double r = 3.0;
+    shapes::Sample s = shapes::roundedCube(2.0 * a, r, 1.0, 4);
+    shapes::addNormalNoise(s, 0.3, 9);
+    const FilletScore score = scoreFillets(extractFeatureLines(s.points), a, r);
+    EXPECT_LT(score.sharpLength, 0.05 * score.smoothLength);
+    EXPECT_GT(score.covered, 0.8);
+    ASSERT_FALSE(score.distance.empty());
+    EXPECT_LT(score.distance[score.distance.size() / 2], 0.5);
+}
+
+TEST(ProfileTypingExtraction, CubeEdgesStaySharpAtNinetyDegrees)
+{
+    const shapes::Sample s = shapes::cube(30.0, 1.0, 3);
+    const ExtractionResult result = extractFeatureLines(s.points);
+    int sharp = 0;
+    for (const FeatureLine& line : result.lines) {
+        EXPECT_NE(line.type, LineType::Smooth);
+        if (line.type == LineType::Sharp) {
+            ++sharp;
+            EXPECT_NEAR(line.angle, 90.0, 3.0);
+        }
+    }
+    EXPECT_EQ(sharp, 12);
+}
+
+} // namespace
