@@ -240,6 +240,13 @@ Extraction::Extraction()
                       "Per wire of SmoothWires: its smooth region.");
     ADD_PROPERTY_TYPE(SmoothLineThresholds, (), "Output", outputType,
                       "Per wire of SmoothWires: the curvature threshold it borders.");
+    ADD_PROPERTY_TYPE(SharpAngles, (), "Output", outputType,
+                      "Per wire of SharpWires: the angle between the two faces meeting on it, in "
+                      "degrees inside their wedge (90 on a box edge, near 180 for a shallow "
+                      "crease); NaN where not estimated.");
+    ADD_PROPERTY_TYPE(SmoothBlendRadii, (), "Output", outputType,
+                      "Per wire of SmoothWires: the radius of the blend (fillet) it borders; NaN "
+                      "where not estimated.");
     ADD_PROPERTY_TYPE(LineIds, (), "Output", perPointType,
                       "Per wire of Shape: the ids of the extraction's lines it is made of "
                       "('3', or '3 7' for merged lines), the ids RemovedLines holds.");
@@ -434,6 +441,8 @@ void Extraction::setOutputs(const ExtractionOutputs& out)
     ClosedLineCount.setValue(w.closed);
     SmoothLineRegions.setValues(w.smoothRegion);
     SmoothLineThresholds.setValues(w.smoothThreshold);
+    SharpAngles.setValues(w.sharpAngle);
+    SmoothBlendRadii.setValues(w.smoothBlendRadius);
 
     Polylines.setValue(placed(out.polylines.sharp, out.polylines.smooth, out.polylines.boundary));
     CurveKinds.setValues(out.network.curveKinds);

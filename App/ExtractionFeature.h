@@ -84,6 +84,11 @@ public:
     /// Per wire of SmoothWires: its region and threshold.
     App::PropertyIntegerList SmoothLineRegions;
     App::PropertyFloatList SmoothLineThresholds;
+    /// Per wire of SharpWires: the angle between the faces meeting on it, degrees inside their
+    /// wedge; per wire of SmoothWires: the radius of the blend it borders. NaN where not
+    /// estimated; empty on a document saved before they existed, until it is recomputed.
+    App::PropertyFloatList SharpAngles;
+    App::PropertyFloatList SmoothBlendRadii;
     /// Per wire of Shape: the ids of the extraction's lines it is made of ("3", or "3 7" for
     /// merged lines), the ids RemovedLines holds.
     App::PropertyStringList LineIds;

@@ -13,6 +13,7 @@
 #include <Mod/Points/App/Points.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -56,12 +57,14 @@ void addWire(LineWires& out, const CleanedLine& cleaned, const TopoDS_Wire& wire
     case LineType::Sharp:
         out.sharp.push_back(wire);
         out.sharpIds.push_back(cleaned.ids);
+        out.sharpAngle.push_back(line.angle);
         break;
     case LineType::Smooth:
         out.smooth.push_back(wire);
         out.smoothIds.push_back(cleaned.ids);
         out.smoothRegion.push_back(line.region);
         out.smoothThreshold.push_back(line.threshold);
+        out.smoothBlendRadius.push_back(line.blendRadius);
         break;
     case LineType::Boundary:
         out.boundary.push_back(wire);
@@ -99,10 +102,24 @@ bool mergeable(const featurelines::FeatureLine& a, const featurelines::FeatureLi
            (a.type != LineType::Smooth || a.threshold == b.threshold);
 }
 
+/// The estimate of a line joined from pieces of lengths `la` and `lb` whose estimates are `a`
+/// and `b`: their mean weighted by length over the pieces that have one (not NaN); NaN when
+/// neither has.
+double joinedEstimate(double a, double la, double b, double lb)
+{
+    if (std::isnan(a) || std::isnan(b)) {
+        return std::isnan(a) ? b : a;
+    }
+    return la + lb > 0.0 ? (a * la + b * lb) / (la + lb) : 0.5 * (a + b);
+}
+
 /// `b` appended to `a`, both open and meeting at junction `j` (a's end, b's start after turning
 /// them): a line from a's start to b's end, closed when those are one junction.
 CleanedLine joined(CleanedLine a, CleanedLine b, int j)
 {
+    // Lengths in the cloud's coordinates: their ratio is that of the world's (a placement).
+    const double la = worldLength(a.line, Base::Matrix4D());
+    const double lb = worldLength(b.line, Base::Matrix4D());
     if (a.line.endJunction != j) {
         reverse(a);
     }
@@ -116,6 +133,8 @@ CleanedLine joined(CleanedLine a, CleanedLine b, int j)
     CleanedLine out = a;
     out.line.points = points;
     out.line.endJunction = b.line.endJunction;
+    out.line.angle = joinedEstimate(a.line.angle, la, b.line.angle, lb);
+    out.line.blendRadius = joinedEstimate(a.line.blendRadius, la, b.line.blendRadius, lb);
     out.ids.insert(out.ids.end(), b.ids.begin(), b.ids.end());
     std::sort(out.ids.begin(), out.ids.end());
     if (out.line.startJunction >= 0 && out.line.startJunction == out.line.endJunction) {

@@ -67,9 +67,10 @@ struct CleanedLine
 };
 
 /// The result's lines cleaned: the removed ones left out, then lines meeting end to end merged
-/// (when asked; a merge of lines of one type, and for smooth lines of one region and threshold),
-/// then the ones shorter than minLength (measured in world coordinates) dropped. Ids out of
-/// range are ignored.
+/// (when asked; a merge of lines of one type, and for smooth lines of one region and threshold;
+/// its angle and blend radius are those of the pieces weighted by their lengths, of the
+/// estimated pieces only, NaN when none was), then the ones shorter than minLength (measured in
+/// world coordinates) dropped. Ids out of range are ignored.
 std::vector<CleanedLine> cleanLines(const std::vector<featurelines::FeatureLine>& lines,
                                     const LineCleaning& cleaning, const Base::Matrix4D& toWorld);
 
@@ -82,6 +83,11 @@ struct LineWires
     /// Per smooth wire: the region and threshold of its line.
     std::vector<long> smoothRegion;
     std::vector<double> smoothThreshold;
+    /// Per sharp wire: its line's angle (FeatureLine::angle, degrees); per smooth wire: its
+    /// line's blend radius (FeatureLine::blendRadius, the cloud's units). NaN where not
+    /// estimated.
+    std::vector<double> sharpAngle;
+    std::vector<double> smoothBlendRadius;
     int closed = 0;
 };
 /// How one line becomes a wire: false when it makes none.

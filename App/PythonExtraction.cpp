@@ -68,6 +68,8 @@ Py::Dict extractionDict(const ExtractionOutputs& o)
     out["open_patches"] = open;
     out["smooth_regions"] = intList(w.smoothRegion);
     out["smooth_thresholds"] = floatList(w.smoothThreshold);
+    out["sharp_angles"] = estimateList(w.sharpAngle);
+    out["smooth_blend_radii"] = estimateList(w.smoothBlendRadius);
     out["closed"] = Py::Long(w.closed);
     Py::Dict thresholds;
     for (const auto& [region, list] : o.thresholdsByRegion) {
@@ -149,6 +151,9 @@ void Module::addExtractionFunctions()
         "  'patch_borders': {patch: [outer wire, hole wires...]} on the same edges;\n"
         "      'open_patches': {patch: why its border is not closed}\n"
         "  'smooth_regions', 'smooth_thresholds': per smooth wire, its region and threshold\n"
+        "  'sharp_angles': per sharp wire, the angle between the faces meeting on it (degrees\n"
+        "      inside their wedge); 'smooth_blend_radii': per smooth wire, the radius of the\n"
+        "      blend it borders; None where not estimated\n"
         "  'thresholds': {region: [thresholds used, high to low]}\n"
         "  'regions', 'patches', 'labels', 'curvature': per input point (-1 / NaN outside\n"
         "      every region; labels 0 low, 1 inner, 2 border, 3 noisy)\n"

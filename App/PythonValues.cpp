@@ -11,6 +11,7 @@
 #include <Mod/Points/App/PointsPy.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "ExtractionFeature.h"
@@ -194,6 +195,16 @@ Py::List floatList(const std::vector<double>& values)
     Py::List list(static_cast<int>(values.size()));
     for (size_t i = 0; i < values.size(); ++i) {
         list.setItem(static_cast<int>(i), Py::Float(values[i]));
+    }
+    return list;
+}
+
+Py::List estimateList(const std::vector<double>& values)
+{
+    Py::List list(static_cast<int>(values.size()));
+    for (size_t i = 0; i < values.size(); ++i) {
+        list.setItem(static_cast<int>(i),
+                     std::isnan(values[i]) ? Py::None() : Py::Object(Py::Float(values[i])));
     }
     return list;
 }

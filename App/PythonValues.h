@@ -49,6 +49,8 @@ template <class Container> Py::List intList(const Container& values)
 }
 
 Py::List floatList(const std::vector<double>& values);
+/// floatList with None for each NaN (a value not estimated).
+Py::List estimateList(const std::vector<double>& values);
 Py::List stringList(const std::vector<std::string>& values);
 
 } // namespace FeatureLines

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "ExtractionFeature.h"
@@ -129,6 +130,17 @@ std::string lineCountMismatch(const Extraction& e)
         if (size != static_cast<size_t>(smooth)) {
             return std::string(name) + " holds " + count(size, "values") +
                    " but SmoothLineCount is " + std::to_string(smooth);
+        }
+    }
+    // Empty in a document saved before they existed: that is no contradiction.
+    for (const auto& [name, size, countName, lineCount] :
+         {std::tuple("SharpAngles", size_t(e.SharpAngles.getSize()), "SharpLineCount",
+                     e.SharpLineCount.getValue()),
+          std::tuple("SmoothBlendRadii", size_t(e.SmoothBlendRadii.getSize()), "SmoothLineCount",
+                     smooth)}) {
+        if (size != 0 && size != static_cast<size_t>(lineCount)) {
+            return std::string(name) + " holds " + count(size, "values") + " but " + countName +
+                   " is " + std::to_string(lineCount);
         }
     }
     return outOfRange("SmoothLineRegions", e.SmoothLineRegions.getValues(), 0,

@@ -28,6 +28,7 @@
 #include "FeatureLines/cli/CurveOutput.h"
 #include "FeatureLines/cli/Inputs.h"
 #include "FeatureLines/cli/Json.h"
+#include "FeatureLines/cli/LineOutput.h"
 #include "FeatureLines/cli/OutputFiles.h"
 #include "FeatureLines/cli/Progress.h"
 #include "FeatureLines/curvature/Curvature.h"
@@ -399,28 +400,6 @@ ExtractionOptions extractionOptions(const Arguments& a)
     return o;
 }
 
-/// The lines of the result as a JSON array, one line per row.
-std::string linesJson(const ExtractionResult& r)
-{
-    using namespace json;
-    std::string lines = "[";
-    for (std::size_t i = 0; i < r.lines.size(); ++i) {
-        const FeatureLine& l = r.lines[i];
-        Object line;
-        line.add("type", string(lineTypeName(l.type)))
-            .add("closed", l.closed ? "true" : "false")
-            .add("start_junction", number(static_cast<long>(l.startJunction)))
-            .add("end_junction", number(static_cast<long>(l.endJunction)));
-        if (l.type == LineType::Smooth) {
-            line.add("region", number(static_cast<long>(l.region)))
-                .add("threshold", number(l.threshold));
-        }
-        line.add("points", json::points(l.points));
-        lines += (i ? ",\n  " : "\n  ") + line.str();
-    }
-    return lines + "\n]";
-}
-
 /// Every scale a region's curvature weighed, as a JSON array.
 std::string scaleTrialsJson(const std::vector<RegionGeometry::ScaleTrial>& scaleTrials)
 {
@@ -790,7 +769,8 @@ const std::vector<Command>& commands()
          "--threshold-mode M] [--smoothing M] [--no-sharp] [--no-smooth] [--no-boundary] [--k N] "
          "[--progress [--progress-every S] | --quiet]",
          {{"--output", "FILE",
-           "the lines as JSON: {\"lines\": [{\"type\", \"closed\", "
+           "the lines as JSON: {\"lines\": [{\"type\", \"closed\", \"angle\" (sharp: "
+           "degrees inside the wedge), \"blend_radius\" (smooth), null where not estimated, "
            "\"points\"}], \"junctions\", \"regions\" (per region: its noise, thresholds used, "
            "curvature scale and the coarser scales weighed, scale_trials), \"network\" (the "
            "fitted curves: vertices, edges, patch_borders)}; - for standard output. With several "

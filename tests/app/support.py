@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """What the App tests share: documents with sampled clouds, a scratch folder, wire geometry."""
 
+import math
 import os
 import shutil
 import tempfile
@@ -79,3 +80,13 @@ def face_of(p):
     """The face of an axis-aligned box a point lies on: (axis of its largest coordinate, sign)."""
     axis = max(range(3), key=lambda a: abs(p[a]))
     return axis, p[axis] > 0
+
+
+def not_estimated(value):
+    """A line's angle or blend radius that was not estimated: NaN in a property, None in a dict."""
+    return value is None or math.isnan(value)
+
+
+def estimates_outside(values, low, high):
+    """The estimated values (not_estimated ones skipped) outside the open range (low, high)."""
+    return [v for v in values if not not_estimated(v) and not low < v < high]

@@ -101,6 +101,9 @@ class CleanLinesTest(unittest.TestCase):
         self.assertEqual(len(wires), 9)
         merged = [w for w, ids in zip(wires, self.lines.LineIds) if len(ids.split()) == 2]
         self.assertEqual(len(merged), 2)
+        # A merged line keeps an angle (its pieces', by length): still a right angle, or NaN.
+        self.assertEqual(len(self.lines.SharpAngles), 9)
+        self.assertEqual(support.estimates_outside(self.lines.SharpAngles, 75.0, 105.0), [])
         for wire in merged:
             self.assertFalse(wire.isClosed())
             self.assertGreater(wire.Length, 1.9 * single[0])

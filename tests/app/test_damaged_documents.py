@@ -155,6 +155,28 @@ class DamagedDocumentTest(unittest.TestCase):
         self.assertRefused(lines, "SharpLineCount")
         self.assertRecovers(lines)
 
+    def test_angles_of_fewer_wires_than_the_sharp_lines_are_an_error(self):
+        # SharpAngles is a list file: its count, then doubles (App::PropertyFloatList).
+        def float_list_file(path, prop):
+            with zipfile.ZipFile(path) as archive:
+                xml = archive.read("Document.xml").decode("utf-8")
+            return re.search(r'<Property name="%s"[^>]*>\s*<FloatList file="([^"]+)"' % prop,
+                             xml).group(1)
+
+        def one_angle_less(data):
+            (count,) = struct.unpack_from("<I", data)
+            assert count == 12, count
+            values = struct.unpack_from("<%dd" % count, data, 4)[:-1]
+            return struct.pack("<I", len(values)) + struct.pack("<%dd" % len(values), *values)
+
+        entry = float_list_file(self.saved, "SharpAngles")
+        lines = self.reopen(self.damaged_copy("angles.FCStd", entry, one_angle_less))
+        self.assertIn("SharpAngles holds 11 values but SharpLineCount is 12",
+                      support.error_message(lines))
+        self.assertRefused(lines, "SharpAngles")
+        self.assertRecovers(lines)
+        self.assertEqual(len(lines.SharpAngles), 12)
+
     def test_unpaired_threshold_lists_are_an_error(self):
         def one_more_region(data):
             xml = data.decode("utf-8")

@@ -45,6 +45,15 @@ class CubeTest(unittest.TestCase):
         for p in support.vertex_points(lines.Shape):
             self.assertTrue(on_cube_edge(p, EDGE / 2, 2 * SPACING), p)
 
+    def test_each_sharp_wire_has_its_angle_and_no_blend_radius(self):
+        # Per wire of SharpWires its faces' angle: a cube's edges are right angles, where one
+        # was estimated (NaN where not); no smooth wire, so no blend radius.
+        angles = list(self.lines.SharpAngles)
+        self.assertEqual(len(angles), self.lines.SharpLineCount)
+        self.assertEqual(support.estimates_outside(angles, 0.0, 180.0), [])
+        self.assertEqual(support.estimates_outside(angles, 75.0, 105.0), [], "a box edge is 90")
+        self.assertEqual(list(self.lines.SmoothBlendRadii), [])
+
     def test_the_network_is_closed_at_the_eight_corners(self):
         # Sec. 1.2: closed feature lines; on a cube every edge ends on two corner junctions.
         junctions = self.lines.Junctions
@@ -129,6 +138,15 @@ class RoundedCubeTest(unittest.TestCase):
         for wire in lines.SmoothWires.Wires:
             self.assertTrue(wire.isClosed())
         self.assertEqual(len(lines.Shape.Wires), 14)
+
+    def test_each_smooth_wire_has_its_blend_radius_and_no_angle(self):
+        # Per wire of SmoothWires the radius of the blend it borders: every blend of the part
+        # has radius RADIUS, where one was estimated (NaN where not); no sharp wire, no angle.
+        radii = list(self.lines.SmoothBlendRadii)
+        self.assertEqual(len(radii), self.lines.SmoothLineCount)
+        self.assertEqual(support.estimates_outside(radii, 0.0, math.inf), [])
+        self.assertEqual(support.estimates_outside(radii, RADIUS / 2, 2 * RADIUS), [])
+        self.assertEqual(list(self.lines.SharpAngles), [])
 
     def test_flat_face_patches_are_patch_clouds(self):
         doc = support.new_document("Patches")

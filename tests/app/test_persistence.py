@@ -46,6 +46,8 @@ class SaveAndReopenTest(unittest.TestCase):
         cls.saved = {name: lines.getPropertyByName(name) for name in cls.names}
         cls.outputs = {name: lines.getPropertyByName(name) for name in OUTPUTS}
         cls.curvature = list(lines.PointCurvature)
+        cls.estimates = {name: list(lines.getPropertyByName(name))
+                         for name in ("SharpAngles", "SmoothBlendRadii")}
         cls.junctions = [(j.x, j.y, j.z) for j in lines.Junctions]
         cls.shapes = {name: wire_vertices(lines.getPropertyByName(name))
                       for name in ("Shape", "SharpWires", "SmoothWires", "BoundaryWires")}
@@ -83,6 +85,13 @@ class SaveAndReopenTest(unittest.TestCase):
         self.assertEqual(len(curvature), len(self.curvature))
         for a, b in zip(curvature, self.curvature):
             self.assertTrue(a == b or (math.isnan(a) and math.isnan(b)))
+        # NaN (not estimated) comes back as NaN.
+        self.assertEqual(len(self.estimates["SmoothBlendRadii"]), 8 + 6)
+        for name, saved in self.estimates.items():
+            reopened = list(self.lines.getPropertyByName(name))
+            self.assertEqual(len(reopened), len(saved), name)
+            for a, b in zip(reopened, saved):
+                self.assertTrue(a == b or (math.isnan(a) and math.isnan(b)), name)
         self.assertEqual([(j.x, j.y, j.z) for j in self.lines.Junctions], self.junctions)
         self.assertEqual(self.lines.Spacing.Value, self.spacing)
 

@@ -2,6 +2,7 @@
 """The Python functions macros use: extract(), histogram(), makeExtraction(), parameters(),
 readCloud() and the .xyz importer."""
 
+import math
 import os
 import random
 import unittest
@@ -34,6 +35,15 @@ class ExtractTest(unittest.TestCase):
             self.assertIsInstance(wire, Part.Wire)
             self.assertFalse(wire.isClosed(), "an edge runs from corner to corner")
             self.assertAlmostEqual(wire.Length, EDGE, delta=4 * SPACING)
+
+    def test_each_sharp_wire_has_its_angle_or_none(self):
+        # A cube's edges are right angles; None where the angle was not estimated.
+        r = self.result
+        self.assertEqual(len(r["sharp_angles"]), len(r["sharp"]))
+        for angle in r["sharp_angles"]:
+            self.assertTrue(angle is None or isinstance(angle, float), angle)
+        self.assertEqual(support.estimates_outside(r["sharp_angles"], 75.0, 105.0), [])
+        self.assertEqual(r["smooth_blend_radii"], [])
 
     def test_per_point_results(self):
         r = self.result
@@ -83,6 +93,10 @@ class ExtractTest(unittest.TestCase):
             self.assertEqual([t for ts in r["thresholds"].values() for t in ts],
                              list(lines.UsedThresholds))
             self.assertEqual(r["closed"], lines.ClosedLineCount)
+            # None in the dict where the property holds NaN: not estimated.
+            self.assertEqual(len(r["sharp_angles"]), len(lines.SharpAngles))
+            for mine, theirs in zip(r["sharp_angles"], lines.SharpAngles):
+                self.assertTrue(mine == theirs or (mine is None and math.isnan(theirs)))
             self.assertAlmostEqual(r["spacing"], lines.Spacing.Value, places=12)
         finally:
             support.close_document(doc)
@@ -98,6 +112,11 @@ class ExtractTest(unittest.TestCase):
                          sorted([0.25 / RADIUS] * 6 + [0.75 / RADIUS] * 8))
         self.assertEqual(set(r["smooth_regions"]), {0})
         self.assertEqual(r["closed"], 14)
+        # Every blend of the part has radius RADIUS; None where not estimated.
+        self.assertEqual(len(r["smooth_blend_radii"]), 14)
+        self.assertEqual(support.estimates_outside(r["smooth_blend_radii"], RADIUS / 2,
+                                                   2 * RADIUS), [])
+        self.assertEqual(r["sharp_angles"], [])
         # The same keyword names as the properties, per region:
         same = FeatureLines.extract(points, ThresholdMode="Explicit",
                                     RegionThresholds={0: "0.125 0.0416666"})

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # featurelines extract as a user runs it: a cube gives its 12 sharp edges meeting at 8 corners
-# in the JSON lines file, the labels file has one line per input point, a sphere gives no line
-# and says so, and bad calls exit 2 (usage) or 1 (input) with a reason.
+# in the JSON lines file (each with its right angle, or null where not estimated), the labels
+# file has one line per input point, a sphere gives no line and says so, and bad calls exit 2
+# (usage) or 1 (input) with a reason.
 # Usage: test_extract.sh FEATURELINES SCRATCH
 set -u
 bin=${1:?usage: test_extract.sh FEATURELINES SCRATCH}
@@ -28,6 +29,16 @@ for l in sharp:
         near = sum(1 for c in p if min(abs(c), abs(c - 10)) < 0.5)
         assert near >= 2, "vertex %s is on no cube edge" % p
 assert len(d["regions"]) == 6, "%d smooth regions, expected the 6 faces" % len(d["regions"])
+for l in d["lines"]:
+    # Every line carries both estimates, null where none was made: an angle on sharp lines only
+    # (where estimated, the cube's right angle), a blend radius on smooth lines only.
+    assert "angle" in l and "blend_radius" in l, "a line without angle / blend_radius: %s" % l
+    if l["type"] == "sharp":
+        assert l["angle"] is None or 75 < l["angle"] < 105, "a cube edge at %r deg" % l["angle"]
+    else:
+        assert l["angle"] is None, "a %s line with an angle: %r" % (l["type"], l["angle"])
+    if l["type"] != "smooth":
+        assert l["blend_radius"] is None, "a %s line with a blend radius" % l["type"]
 PY
 labels=$(grep -vc '^#' "$work/cube-labels.txt")
 [ "$labels" -eq "$points" ] || fail "labels file has $labels lines for $points points"
