@@ -98,8 +98,11 @@ void reverse(CleanedLine& c)
 
 bool mergeable(const featurelines::FeatureLine& a, const featurelines::FeatureLine& b)
 {
+    // A blend's borders have no threshold (NaN): two pieces of them join like two of one level.
+    const bool sameThreshold =
+        a.threshold == b.threshold || (std::isnan(a.threshold) && std::isnan(b.threshold));
     return a.type == b.type && a.region == b.region &&
-           (a.type != LineType::Smooth || a.threshold == b.threshold);
+           (a.type != LineType::Smooth || sameThreshold);
 }
 
 /// The estimate of a line joined from pieces of lengths `la` and `lb` whose estimates are `a`

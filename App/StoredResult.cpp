@@ -143,7 +143,8 @@ std::string lineCountMismatch(const Extraction& e)
                    " is " + std::to_string(lineCount);
         }
     }
-    return outOfRange("SmoothLineRegions", e.SmoothLineRegions.getValues(), 0,
+    // -1: the border of a blend typed by its profile, which lies in no region.
+    return outOfRange("SmoothLineRegions", e.SmoothLineRegions.getValues(), -1,
                       e.RegionCount.getValue(), "RegionCount");
 }
 

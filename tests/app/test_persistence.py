@@ -133,5 +133,40 @@ class SaveAndReopenTest(unittest.TestCase):
             support.close_document(doc)
 
 
+class BlendBordersSaveAndReopenTest(unittest.TestCase):
+    """Fillets of two spacings come out as the two borders of each blend, typed by their
+    profile: they lie in no region (-1) and border no threshold (NaN); such a document opens
+    again as it was saved."""
+
+    def test_blend_borders_come_back(self):
+        folder = support.scratch_dir("persistence-blends")
+        path = os.path.join(folder, "blends.FCStd")
+        doc = support.new_document("Blends")
+        radius = 2.0
+        points = sampled_shapes.rounded_cube(30.0, radius, 1.0, 3)
+        cloud, lines = support.add_extraction(doc, points)
+        self.assertEqual(support.error_message(lines), "")
+        regions = list(lines.SmoothLineRegions)
+        thresholds = list(lines.SmoothLineThresholds)
+        radii = list(lines.SmoothBlendRadii)
+        self.assertEqual(lines.SharpLineCount, 0)
+        self.assertEqual(lines.SmoothLineCount, 24, "two borders of each of the 12 fillets")
+        self.assertEqual(set(regions), {-1})
+        self.assertTrue(all(math.isnan(t) for t in thresholds))
+        self.assertTrue(all(0.7 * radius < r < 1.5 * radius for r in radii), radii)
+        doc.saveAs(path)
+        support.close_document(doc)
+        FeatureLines.clearCache()
+        doc = FreeCAD.openDocument(path)
+        try:
+            lines = doc.getObject("FeatureLines")
+            self.assertEqual(support.error_message(lines), "")
+            self.assertNotIn("Touched", lines.State)
+            self.assertEqual(list(lines.SmoothLineRegions), regions)
+            self.assertTrue(all(math.isnan(t) for t in lines.SmoothLineThresholds))
+            self.assertEqual(list(lines.SmoothBlendRadii), radii)
+        finally:
+            support.close_document(doc)
+
 if __name__ == "__main__":
     unittest.main()
