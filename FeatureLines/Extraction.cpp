@@ -16,6 +16,7 @@
 #include "FeatureLines/neighbourhoods/BalancedNeighbourhoods.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/BlendRadius.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/smooth/SmoothEdgeLevel.h"
 #include "FeatureLines/support/DisjointSets.h"
@@ -494,11 +495,13 @@ std::vector<PointLabel> addSmoothLines(const RegionGeometry& g, const RegionRepo
     for (size_t level = 0; level < rr.thresholds.size(); ++level) {
         const SmoothEdgeLevel& atLevel = edges.levels[level];
         const int offset = static_cast<int>(result.junctions.rows());
-        for (const Polyline& line : atLevel.network.lines) {
-            FeatureLine f = toFeatureLine(line, LineType::Smooth, offset);
+        const std::vector<double> radii = blendRadii(g, atLevel);
+        for (size_t l = 0; l < atLevel.network.lines.size(); ++l) {
+            FeatureLine f = toFeatureLine(atLevel.network.lines[l], LineType::Smooth, offset);
             f.region = g.region;
             f.level = static_cast<int>(level);
             f.threshold = rr.thresholds[level];
+            f.blendRadius = radii[l];
             result.lines.push_back(std::move(f));
         }
         appendJunctions(result.junctions, atLevel.network.junctions);

@@ -48,8 +48,10 @@ struct FeatureLine
     /// 180 for a shallow crease); the median along the line of the faces' fitted planes. NaN
     /// where no two faces were fitted, and for smooth and boundary lines.
     double angle = std::numeric_limits<double>::quiet_NaN();
-    /// Smooth lines: the estimated radius of the blend the line borders (length unit); NaN
-    /// where none was estimated, and for sharp and boundary lines.
+    /// Smooth lines: the estimated radius of the blend the line borders (length unit), from the
+    /// profile fitted across it (the borders of a blend typed by its profile) or from the
+    /// largest principal curvature beside it (blendRadii()); NaN where none was estimated, and
+    /// for sharp and boundary lines.
     double blendRadius = std::numeric_limits<double>::quiet_NaN();
     /// Rows of ExtractionResult::junctions the ends sit on, -1 for none.
     int startJunction = -1;

@@ -309,6 +309,36 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
     return H;
 }
 
+double largestCurvature(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                        Eigen::Index i)
+{
+    const int k = N.k();
+    const Frame f = frameOf(normals, N, i, k);
+    if (!f.valid || k < minimumNeighbours) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    const Sums<double> sums = sumsOf(P, N, i, k, f);
+    double c[6];
+    if (!solveQuadric(sums.s, sums.r, k + 1.0, c)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    // The shape operator of the graph z(x, y) at the origin: the first fundamental form I of
+    // the gradient (d, e), the second II = Hessian / sqrt(1 + d^2 + e^2); its eigenvalues, those
+    // of I^-1 II, are the principal curvatures.
+    const double a = c[0], b = c[1], cc = c[2], d = c[3], e = c[4];
+    const double g = 1.0 + d * d + e * e;
+    Eigen::Matrix2d first, second;
+    first << 1.0 + d * d, d * e, d * e, 1.0 + e * e;
+    second << 2.0 * a, b, b, 2.0 * cc;
+    second /= std::sqrt(g);
+    const Eigen::Matrix2d shape = first.inverse() * second;
+    // Real eigenvalues (I is positive definite, II symmetric): from the trace and determinant.
+    const double mean = 0.5 * shape.trace();
+    const double spread = std::sqrt(std::max(0.0, mean * mean - shape.determinant()));
+    const double largest = (std::abs(mean) + spread) * f.scale;
+    return std::isfinite(largest) ? largest : std::numeric_limits<double>::quiet_NaN();
+}
+
 double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
                      Eigen::Index i)
 {

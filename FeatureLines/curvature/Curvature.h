@@ -29,6 +29,12 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
                               const Neighbourhoods& N, const CurvatureOptions& options = {},
                               const ProgressSpan& progress = {});
 
+/// The largest principal curvature in magnitude (1 / length unit) at point i of the quadric of
+/// meanCurvature() fitted over all N.k() neighbours: 1/r on a cylinder or a sphere of radius r,
+/// 0 on a plane. NaN when the normal, the neighbourhood or the fit is degenerate.
+double largestCurvature(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+                        Eigen::Index i);
+
 /// The height at point i of the quadric of meanCurvature() fitted to i's neighbours alone
 /// (all N.k() of them, not i itself), in i's normal frame (length unit). On a smooth surface
 /// the quadric predicts the point to third order, so what remains is the point's noise,

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # featurelines extract as a user runs it: a cube gives its 12 sharp edges meeting at 8 corners
 # in the JSON lines file (each with its right angle, or null where not estimated), the labels
-# file has one line per input point, a sphere gives no line and says so, and bad calls exit 2
-# (usage) or 1 (input) with a reason.
+# file has one line per input point, the demo part's smooth lines carry their fillets' radii, a
+# sphere gives no line and says so, and bad calls exit 2 (usage) or 1 (input) with a reason.
 # Usage: test_extract.sh FEATURELINES SCRATCH
 set -u
 bin=${1:?usage: test_extract.sh FEATURELINES SCRATCH}
@@ -49,6 +49,23 @@ sphere 3 4000 0 0 0 > "$work/sphere.xyz"
 grep -q "no feature lines" "$work/sphere.out" || fail "sphere summary: $(cat "$work/sphere.out")"
 $py -c "import json,sys; assert json.load(open(sys.argv[1]))['lines'] == []" "$work/sphere.json" \
     || fail "sphere JSON has lines"
+
+# The shipped demo part (bench/cad/CadShapes.cpp, boss_blend): its smooth lines border the 6 mm
+# fillet round the boss and the 12 mm fillets of the plate's vertical corners; each carries the
+# radius of its blend within 10 %.
+demo="$(dirname "$0")/../../samples/boss_blend.xyz"
+"$bin" extract "$demo" -o "$work/demo.json" > "$work/demo.out" || fail "extract on the demo exited $?"
+$py - "$work/demo.json" <<'PY' || fail "demo JSON: see above"
+import json, sys
+d = json.load(open(sys.argv[1]))
+smooth = [l for l in d["lines"] if l["type"] == "smooth"]
+assert len(smooth) >= 6, "%d smooth lines" % len(smooth)
+radii = sorted(l["blend_radius"] for l in smooth)
+assert all(r is not None for r in radii), "a smooth line without its blend radius: %s" % radii
+near = [r for r in radii if abs(r - 6) < 0.6 or abs(r - 12) < 1.2]
+assert near == radii, "blend radii not 6 or 12 mm within 10 %%: %s" % radii
+assert any(abs(r - 6) < 0.6 for r in radii) and any(abs(r - 12) < 1.2 for r in radii), radii
+PY
 
 expect 2 "no output file" extract "$work/cube.xyz"
 expect 2 "no INPUT" extract -o "$work/x.json"

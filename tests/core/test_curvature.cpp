@@ -95,6 +95,33 @@ TEST(Curvature, CylinderIsOneOverTwiceRadius)
     EXPECT_LT(worstRelativeError(curvatureOf(s.points), 1.0 / 40.0), 0.02);
 }
 
+TEST(Curvature, LargestPrincipalCurvatureIsOneOverRadiusOnSphereAndCylinderAlike)
+{
+    // What tells a blend's radius: 1/r on a cylinder (where H is 1/(2r)) as on a sphere; a
+    // plane gives 0.
+    const shapes::Sample sphere = shapes::sphere(20.0, 1.0, 2);
+    const shapes::Sample cylinder = shapes::cylinder(20.0, 60.0, 1.0, 3);
+    const shapes::Sample plane = shapes::plane(30.0, 1.0, 1);
+    for (const shapes::Sample* s : {&sphere, &cylinder, &plane}) {
+        const Neighbourhoods N = nearestNeighbours(s->points, {16, 0});
+        const NormalMatrix normals = pcaNormals(s->points, N).normals;
+        Eigen::VectorXd kappa(s->points.rows());
+        for (Eigen::Index i = 0; i < kappa.size(); ++i) {
+            kappa(i) = largestCurvature(s->points, normals, N, i);
+        }
+        if (s == &plane) {
+            EXPECT_LT(kappa.cwiseAbs().maxCoeff(), 1e-9);
+        } else {
+            EXPECT_LT(worstRelativeError(kappa, 1.0 / 20.0), 0.02);
+        }
+    }
+    // A point without a normal has no fit.
+    const Neighbourhoods N = nearestNeighbours(sphere.points, {16, 0});
+    NormalMatrix normals = pcaNormals(sphere.points, N).normals;
+    normals.row(7).setZero();
+    EXPECT_TRUE(std::isnan(largestCurvature(sphere.points, normals, N, 7)));
+}
+
 TEST(Curvature, SignFollowsTheNormal)
 {
     const shapes::Sample s = shapes::sphere(20.0, 1.0, 4);

@@ -435,3 +435,37 @@ TEST(Extraction, BadCloudsAreRefusedWithAMessage)
     nan(7, 1) = std::numeric_limits<double>::quiet_NaN();
     EXPECT_NE(message(nan).find("point 8"), std::string::npos);
 }
+
+TEST(Extraction, SmoothLinesCarryTheRadiusOfTheirBlend)
+{
+    // Fillets and spherical corners of radius 6 (12 spacings): the corner loops border the
+    // spheres (principal curvatures 1/6 twice), the face loops the fillets (1/6 and 0); both
+    // give the radius 6, clean and with noise of 0.3 spacing.
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    for (double noise : {0.0, 0.3 * h}) {
+        shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
+        if (noise > 0.0) {
+            shapes::addNormalNoise(s, noise, 15);
+        }
+        const ExtractionResult r = extractFeatureLines(s.points);
+        ASSERT_EQ(r.countLines(LineType::Smooth), 14) << "noise " << noise;
+        for (const FeatureLine* line : linesOf(r, LineType::Smooth)) {
+            EXPECT_GT(line->blendRadius, 0.75 * radius) << "noise " << noise;
+            EXPECT_LT(line->blendRadius, 1.3 * radius) << "noise " << noise;
+        }
+    }
+}
+
+TEST(Extraction, NoBlendRadiusOnSharpOrBoundaryLines)
+{
+    const shapes::Sample cube = shapes::cube(20.0, 0.5, 3);
+    const shapes::Sample plane = shapes::plane(20.0, 0.5, 9);
+    for (const shapes::Sample* s : {&cube, &plane}) {
+        const ExtractionResult r = extractFeatureLines(s->points);
+        ASSERT_FALSE(r.lines.empty());
+        for (const FeatureLine& line : r.lines) {
+            EXPECT_NE(line.type, LineType::Smooth);
+            EXPECT_TRUE(std::isnan(line.blendRadius));
+        }
+    }
+}
