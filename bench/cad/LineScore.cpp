@@ -404,6 +404,70 @@ double LineQuality::confusionShare(LineType truth, LineType found) const
                : notDefined;
 }
 
+/// LineQuality's estimate errors: each detected sharp or smooth sample against the nearest true
+/// sample of any type within `tol` (the true edges resampled at `step`).
+void measureEstimates(const std::vector<TypedPolyline>& detected,
+                      const std::vector<TypedPolyline>& truth, double step, double tol,
+                      LineQuality& q)
+{
+    // The true samples, each with its line.
+    std::vector<int> lineOf;
+    PointGrid grid(tol);
+    for (size_t l = 0; l < truth.size(); ++l) {
+        const PointMatrix s = resamplePolyline(truth[l], step);
+        for (Eigen::Index i = 0; i < s.rows(); ++i) {
+            grid.insert(s.row(i).transpose(), static_cast<int>(lineOf.size()));
+            lineOf.push_back(static_cast<int>(l));
+        }
+    }
+    std::vector<double> angleErrors, radiusErrors;
+    long sharpOnSharp = 0, smoothOnSmooth = 0;
+    for (const TypedPolyline& line : detected) {
+        if (line.type != LineType::Sharp && line.type != LineType::Smooth) {
+            continue;
+        }
+        const bool sharp = line.type == LineType::Sharp;
+        const double estimate = sharp ? line.angle : line.radius;
+        const PointMatrix s = resamplePolyline(line, step);
+        for (Eigen::Index i = 0; i < s.rows(); ++i) {
+            int nearest = -1;
+            double best = std::numeric_limits<double>::infinity();
+            grid.forEachWithin(s.row(i).transpose(), tol, [&](int id, double d2) {
+                if (d2 < best) {
+                    best = d2;
+                    nearest = id;
+                }
+                return true;
+            });
+            if (nearest < 0) {
+                continue;
+            }
+            const TypedPolyline& edge = truth[static_cast<size_t>(lineOf[static_cast<size_t>(nearest)])];
+            if (edge.type != line.type) {
+                continue;
+            }
+            (sharp ? sharpOnSharp : smoothOnSmooth) += 1;
+            const double truthValue = sharp ? edge.angle : edge.radius;
+            if (!std::isfinite(estimate) || !std::isfinite(truthValue)) {
+                continue;
+            }
+            if (sharp) {
+                angleErrors.push_back(std::abs(estimate - truthValue));
+            } else if (truthValue > 0.0) {
+                radiusErrors.push_back(std::abs(estimate / truthValue - 1.0));
+            }
+        }
+    }
+    q.medianAngleError = quantile(angleErrors, 0.5);
+    q.medianRadiusError = quantile(radiusErrors, 0.5);
+    q.angleEstimatedShare = sharpOnSharp > 0 ? static_cast<double>(angleErrors.size()) /
+                                                   static_cast<double>(sharpOnSharp)
+                                             : notDefined;
+    q.radiusEstimatedShare = smoothOnSmooth > 0 ? static_cast<double>(radiusErrors.size()) /
+                                                      static_cast<double>(smoothOnSmooth)
+                                                : notDefined;
+}
+
 LineQuality measureLineQuality(const std::vector<TypedPolyline>& detected,
                                const std::vector<TypedPolyline>& truth,
                                const LineScoreOptions& options)
@@ -472,6 +536,7 @@ LineQuality measureLineQuality(const std::vector<TypedPolyline>& detected,
         }
     }
 
+    measureEstimates(detected, truth, step, tol, q);
     q.linesPerTrueEdge =
         truth.empty() ? notDefined
                       : static_cast<double>(detected.size()) / static_cast<double>(truth.size());

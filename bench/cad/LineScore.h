@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,11 @@ struct TypedPolyline
     bool closed = false;
     /// P  #P by 3 vertices in order along the line.
     PointMatrix points;
+    /// Sharp lines: the angle between the two faces inside their wedge (degrees); smooth lines:
+    /// the radius of the blend they border (model units). Of the true edge, or the detector's
+    /// estimate; NaN where none.
+    double angle = std::numeric_limits<double>::quiet_NaN();
+    double radius = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct LineScoreOptions
@@ -128,6 +134,16 @@ struct LineQuality
     /// LineScore::closedness).
     double linesPerTrueEdge = 0.0;
     int freeEnds = 0;
+    /// The lines' estimates against the true edges': over the samples of detected sharp lines
+    /// that carry an angle, and whose nearest true sample within the tolerance lies on a true
+    /// sharp edge (which always has one), |angle - true angle| in degrees; over the samples of
+    /// smooth lines that carry a radius, nearest a true smooth edge, |radius / true radius - 1|.
+    /// Medians; NaN without such samples. estimatedShare: of the detected sharp (smooth)
+    /// samples nearest a true edge of their own type, the share whose line carries an estimate.
+    double medianAngleError = 0.0;
+    double medianRadiusError = 0.0;
+    double angleEstimatedShare = 0.0;
+    double radiusEstimatedShare = 0.0;
 
     /// Share of the true samples of type `truth` found as type `found` (NaN without true
     /// samples of that type).

@@ -49,7 +49,10 @@ const std::vector<Measure>& measures()
          [](const RandomPartRecord& r) { return f1Of(r.scoreAtOneSpacing, LineType::Sharp); }},
         {"smooth F1 @1h",
          [](const RandomPartRecord& r) { return f1Of(r.scoreAtOneSpacing, LineType::Smooth); }},
-        {"median dist", [](const RandomPartRecord& r) { return r.quality.medianDistance; }, true}};
+        {"median dist", [](const RandomPartRecord& r) { return r.quality.medianDistance; }, true},
+        {"angle err", [](const RandomPartRecord& r) { return r.quality.medianAngleError; }, true},
+        {"radius err", [](const RandomPartRecord& r) { return r.quality.medianRadiusError; },
+         true}};
     return list;
 }
 
@@ -206,11 +209,12 @@ TextTable randomPartTable(const std::vector<RandomPartRecord>& records)
 {
     TextTable table;
     table.title = "Random parts (noise in spacings h; scores at 3 h, F1 @1h at one spacing, "
-                  "median distance in spacings)";
+                  "median distance in spacings; median error of the sharp lines' angle in "
+                  "degrees and of the smooth lines' radius relative to the true one)";
     table.header = {"seed",        "group",  "family",       "model",
                     "noise",       "points", "sharp F1",     "smooth F1",
                     "bnd F1",      "closed", "sharp F1 @1h", "smooth F1 @1h",
-                    "median dist", "lines",  "build s",      "time s"};
+                    "median dist", "angle err", "radius err", "lines", "build s", "time s"};
     for (const RandomPartRecord& r : records) {
         table.rows.push_back(
             {std::to_string(r.seed), r.group, r.family, r.model, formatNumber(r.noise, 1),
@@ -219,7 +223,8 @@ TextTable randomPartTable(const std::vector<RandomPartRecord>& records)
              formatNumber(f1Of(r.score, LineType::Boundary)), formatNumber(r.score.closedness),
              formatNumber(f1Of(r.scoreAtOneSpacing, LineType::Sharp)),
              formatNumber(f1Of(r.scoreAtOneSpacing, LineType::Smooth)),
-             formatNumber(r.quality.medianDistance, 2), std::to_string(r.score.lineCount),
+             formatNumber(r.quality.medianDistance, 2), formatNumber(r.quality.medianAngleError, 1),
+             formatNumber(r.quality.medianRadiusError, 2), std::to_string(r.score.lineCount),
              formatNumber(r.buildSeconds, 1), formatNumber(r.seconds, 1)});
     }
     return table;

@@ -675,6 +675,8 @@ std::vector<TypedPolyline> truthCoveredBy(const std::vector<TypedPolyline>& trut
             if (run.size() >= 2) {
                 TypedPolyline piece;
                 piece.type = line.type;
+                piece.angle = line.angle;
+                piece.radius = line.radius;
                 piece.points.resize(static_cast<Eigen::Index>(run.size()), 3);
                 for (std::size_t r = 0; r < run.size(); ++r) {
                     piece.points.row(static_cast<Eigen::Index>(r)) = line.points.row(run[r]);

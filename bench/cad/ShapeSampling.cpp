@@ -121,10 +121,12 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-/// Decides the type of an edge between two faces; false when it is no feature (the same
+/// Decides the type of an edge between two faces (line.type) and its angle (sharp: inside the
+/// wedge, 180 less the median turn of the outward normals) or radius (smooth: 1 over the median
+/// largest principal curvature of the two sides); false when it is no feature (the same
 /// surface continued across the edge).
 bool classifyTwoFaceEdge(const TopoDS_Edge& edge, const TopoDS_Face& f1, const TopoDS_Face& f2,
-                         const TruthOptions& options, LineType& type)
+                         const TruthOptions& options, TypedPolyline& line)
 {
     const BRepAdaptor_Curve curve(edge);
     const BRepAdaptor_Surface s1(f1);
@@ -151,27 +153,29 @@ bool classifyTwoFaceEdge(const TopoDS_Edge& edge, const TopoDS_Face& f1, const T
     if (angles.empty()) {
         return false;
     }
-    if (median(angles) > options.sharpAngleDegrees) {
-        type = LineType::Sharp;
+    const double turn = median(angles);
+    if (turn > options.sharpAngleDegrees) {
+        line.type = LineType::Sharp;
+        line.angle = 180.0 - turn;
         return true;
     }
     const double gap = median(curvatureGaps);
     const double scale = median(curvatureScales);
     if (scale > 0.0 && gap > options.curvatureRelativeTolerance * scale) {
-        type = LineType::Smooth;
+        line.type = LineType::Smooth;
+        line.radius = 1.0 / scale;
         return true;
     }
     return false;
 }
 
-TypedPolyline sampleEdge(const TopoDS_Edge& edge, LineType type, double step)
+/// The samples of `edge` about `step` apart, into `line` (its type and estimates stay).
+void sampleEdge(const TopoDS_Edge& edge, double step, TypedPolyline& line)
 {
     const BRepAdaptor_Curve curve(edge);
     const double length = GCPnts_AbscissaPoint::Length(curve);
     const int count = std::max(2, static_cast<int>(std::ceil(length / step)) + 1);
     GCPnts_UniformAbscissa uniform(curve, count);
-    TypedPolyline line;
-    line.type = type;
     // A closed edge (a full circle) is a closed line; its last sample repeats the first.
     line.closed = BRep_Tool::IsClosed(edge);
     std::vector<Eigen::Vector3d> pts;
@@ -193,7 +197,6 @@ TypedPolyline sampleEdge(const TopoDS_Edge& edge, LineType type, double step)
     for (size_t i = 0; i < pts.size(); ++i) {
         line.points.row(static_cast<Eigen::Index>(i)) = pts[i].transpose();
     }
-    return line;
 }
 
 } // namespace
@@ -436,15 +439,17 @@ std::vector<TypedPolyline> truthEdges(const TopoDS_Shape& shape, const TruthOpti
         if (seam || faces.empty()) {
             continue;
         }
-        LineType type = LineType::Sharp;
+        TypedPolyline line;
+        line.type = LineType::Sharp;
         if (faces.size() == 1) {
-            type = LineType::Boundary;
+            line.type = LineType::Boundary;
         } else if (faces.size() == 2) {
-            if (!classifyTwoFaceEdge(edge, faces[0], faces[1], options, type)) {
+            if (!classifyTwoFaceEdge(edge, faces[0], faces[1], options, line)) {
                 continue;
             }
         }
-        lines.push_back(sampleEdge(edge, type, options.step));
+        sampleEdge(edge, options.step, line);
+        lines.push_back(std::move(line));
     }
     return lines;
 }

@@ -70,6 +70,8 @@ std::optional<FeatureLinesRun> runFeatureLines(const PointMatrix& cloud)
         t.type = lineTypeFromName(featurelines::lineTypeName(l.type));
         t.closed = l.closed;
         t.points = l.points;
+        t.angle = l.angle;
+        t.radius = l.blendRadius;
         run.lines.push_back(std::move(t));
     }
     run.network = featurelines::fitCurveNetwork(result);
@@ -953,18 +955,22 @@ void printLineQuality(const Results& results, bool markdown)
                          formatNumber(q.confusionShare(LineType::Sharp, LineType::Smooth)),
                          formatNumber(q.confusionShare(LineType::Smooth, LineType::Sharp)),
                          formatNumber(q.boundaryLength, 1), formatNumber(q.linesPerTrueEdge, 2),
-                         std::to_string(q.freeEnds)});
+                         std::to_string(q.freeEnds), formatNumber(q.medianAngleError, 1),
+                         formatNumber(q.angleEstimatedShare, 2), formatNumber(q.medianRadiusError, 2),
+                         formatNumber(q.radiusEstimatedShare, 2)});
     }
     if (table.empty()) {
         return;
     }
     if (!markdown) {
         std::cout << "Line quality (distances in spacings; confusion: share of the true edge "
-                     "samples found as the other type)\n";
+                     "samples found as the other type; angle error in degrees, radius error "
+                     "relative, medians, and the share of the lines on true edges of their type "
+                     "that carry the estimate)\n";
     }
     printTable({"part", "noise", "detector", "sharp F1 @1h", "smooth F1 @1h", "median dist",
                 "p95 dist", "sharp as smooth", "smooth as sharp", "boundary length", "lines/edge",
-                "free ends"},
+                "free ends", "angle err", "angles given", "radius err", "radii given"},
                table, markdown);
 }
 

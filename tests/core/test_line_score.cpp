@@ -262,3 +262,36 @@ TEST(LineQuality, FragmentsAndBoundaryLengthAreCounted)
     EXPECT_EQ(q.freeEnds, 10);
     EXPECT_NEAR(q.boundaryLength, 10.0, 1e-12); // 5 units = 10 spacings
 }
+
+TEST(LineQuality, EstimatesAreComparedWithTheEdgeTheyLieOn)
+{
+    // A true crease of 90 degrees and, 10 units away, a true fillet border of radius 4; a third
+    // true edge, sharp, has no detected line. The detector gives the crease 80 degrees on its
+    // first half and no angle on its second, and the border a radius of 5.
+    TypedPolyline crease = segment(LineType::Sharp, {0, 0, 0}, {20, 0, 0}, 2);
+    crease.angle = 90.0;
+    TypedPolyline border = segment(LineType::Smooth, {0, 10, 0}, {20, 10, 0}, 2);
+    border.radius = 4.0;
+    TypedPolyline far = segment(LineType::Sharp, {0, 40, 0}, {20, 40, 0}, 2);
+    far.angle = 120.0;
+    TypedPolyline first = segment(LineType::Sharp, {0, 0, 0}, {10, 0, 0}, 2);
+    first.angle = 80.0;
+    TypedPolyline second = segment(LineType::Sharp, {10.25, 0, 0}, {20, 0, 0}, 2);
+    TypedPolyline smooth = segment(LineType::Smooth, {0, 10.2, 0}, {20, 10.2, 0}, 2);
+    smooth.radius = 5.0;
+    // A sharp line on the smooth edge is no sample of either estimate.
+    TypedPolyline wrongType = segment(LineType::Sharp, {0, 10, 1}, {20, 10, 1}, 2);
+    wrongType.angle = 10.0;
+    const LineQuality q = measureLineQuality({first, second, smooth, wrongType},
+                                             {crease, border, far}, options());
+    EXPECT_DOUBLE_EQ(q.medianAngleError, 10.0);
+    EXPECT_DOUBLE_EQ(q.medianRadiusError, 0.25);
+    // Samples every 0.25: 41 on the first half with an angle, 40 on the second without.
+    EXPECT_NEAR(q.angleEstimatedShare, 41.0 / 81.0, 1e-12);
+    EXPECT_DOUBLE_EQ(q.radiusEstimatedShare, 1.0);
+    // Without estimates on either side: undefined, not zero.
+    const LineQuality none = measureLineQuality({second}, {crease}, options());
+    EXPECT_TRUE(std::isnan(none.medianAngleError));
+    EXPECT_TRUE(std::isnan(none.medianRadiusError));
+    EXPECT_DOUBLE_EQ(none.angleEstimatedShare, 0.0);
+}
