@@ -262,6 +262,21 @@ void curvatureOfPair(const CurvatureFit& fit, Eigen::Index i, const Frame& f0, c
     }
 }
 
+/// The quadric of point i over all N.k() neighbours in i's frame f, its coefficients into c:
+/// with the point itself as a row of the fit (`withPoint`, as meanCurvature() fits) or without.
+/// False when the normal, the neighbourhood or the fit is degenerate.
+bool quadricOf(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
+               Eigen::Index i, bool withPoint, Frame& f, double (&c)[6])
+{
+    const int k = N.k();
+    f = frameOf(normals, N, i, k);
+    if (!f.valid || k < minimumNeighbours) {
+        return false;
+    }
+    const Sums<double> sums = sumsOf(P, N, i, k, f);
+    return solveQuadric(sums.s, sums.r, withPoint ? k + 1.0 : k, c);
+}
+
 } // namespace
 
 Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
@@ -312,14 +327,9 @@ Eigen::VectorXd meanCurvature(const PointMatrix& P, const NormalMatrix& normals,
 double largestCurvature(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
                         Eigen::Index i)
 {
-    const int k = N.k();
-    const Frame f = frameOf(normals, N, i, k);
-    if (!f.valid || k < minimumNeighbours) {
-        return std::numeric_limits<double>::quiet_NaN();
-    }
-    const Sums<double> sums = sumsOf(P, N, i, k, f);
+    Frame f;
     double c[6];
-    if (!solveQuadric(sums.s, sums.r, k + 1.0, c)) {
+    if (!quadricOf(P, normals, N, i, true, f, c)) {
         return std::numeric_limits<double>::quiet_NaN();
     }
     // The shape operator of the graph z(x, y) at the origin: the first fundamental form I of
@@ -342,14 +352,9 @@ double largestCurvature(const PointMatrix& P, const NormalMatrix& normals, const
 double quadricHeight(const PointMatrix& P, const NormalMatrix& normals, const Neighbourhoods& N,
                      Eigen::Index i)
 {
-    const int k = N.k();
-    const Frame f = frameOf(normals, N, i, k);
-    if (!f.valid || k < minimumNeighbours) {
-        return std::numeric_limits<double>::quiet_NaN();
-    }
-    const Sums<double> sums = sumsOf(P, N, i, k, f);
+    Frame f;
     double c[6];
-    if (!solveQuadric(sums.s, sums.r, k, c)) {
+    if (!quadricOf(P, normals, N, i, false, f, c)) {
         return std::numeric_limits<double>::quiet_NaN();
     }
     return c[5] / f.scale;
