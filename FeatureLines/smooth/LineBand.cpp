@@ -8,26 +8,26 @@ namespace featurelines {
 
 LineBand::LineBand(const std::vector<Polyline>& lines, double width) : width_(width)
 {
-    for (const Polyline& line : lines) {
-        sample(line);
+    for (size_t l = 0; l < lines.size(); ++l) {
+        sample(lines[l], static_cast<int>(l));
     }
     markNearCells();
 }
 
-void LineBand::sample(const Polyline& line)
+void LineBand::sample(const Polyline& line, int index)
 {
     const double step = 0.5 * width_;
     const Eigen::Index n = line.points.rows();
     const Eigen::Index segments = line.closed ? n : n - 1;
     if (n == 1) {
-        insert(line.points.row(0));
+        insert(line.points.row(0), index);
     }
     for (Eigen::Index s = 0; s < segments; ++s) {
         const Eigen::RowVector3d a = line.points.row(s);
         const Eigen::RowVector3d b = line.points.row((s + 1) % n);
         const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / step)));
         for (int j = 0; j <= pieces; ++j) {
-            insert(a + (b - a) * (static_cast<double>(j) / pieces));
+            insert(a + (b - a) * (static_cast<double>(j) / pieces), index);
         }
     }
 }
@@ -47,7 +47,7 @@ void LineBand::markNearCells()
     }
 }
 
-bool LineBand::contains(const Eigen::RowVector3d& p) const
+template <class Visit> bool LineBand::forEachAround(const Eigen::RowVector3d& p, Visit visit) const
 {
     const Key c = cell(p);
     if (near_.find(c) == near_.end()) {
@@ -60,15 +60,40 @@ bool LineBand::contains(const Eigen::RowVector3d& p) const
                 if (it == cells_.end()) {
                     continue;
                 }
-                for (const Eigen::RowVector3d& s : it->second) {
-                    if ((s - p).squaredNorm() < width_ * width_) {
+                for (const Sample& s : it->second) {
+                    if (!visit(s)) {
                         return true;
                     }
                 }
             }
         }
     }
-    return false;
+    return true;
+}
+
+bool LineBand::contains(const Eigen::RowVector3d& p) const
+{
+    bool inside = false;
+    forEachAround(p, [&](const Sample& s) {
+        inside = (s.position - p).squaredNorm() < width_ * width_;
+        return !inside;
+    });
+    return inside;
+}
+
+int LineBand::nearestLine(const Eigen::RowVector3d& p) const
+{
+    double best = width_ * width_;
+    int line = -1;
+    forEachAround(p, [&](const Sample& s) {
+        const double d = (s.position - p).squaredNorm();
+        if (d < best) {
+            best = d;
+            line = s.line;
+        }
+        return true;
+    });
+    return line;
 }
 
 LineBand::Key LineBand::cell(const Eigen::RowVector3d& p) const

@@ -11,8 +11,8 @@
 
 namespace featurelines {
 
-/// Samples of the lines, at most half the width apart, in a uniform hash grid of cells `width`
-/// wide (length unit).
+/// Samples of the lines, at most half the width apart, each with its line, in a uniform hash
+/// grid of cells `width` wide (length unit).
 class LineBand
 {
 public:
@@ -20,6 +20,9 @@ public:
 
     /// Whether p lies closer than the width to a sample.
     bool contains(const Eigen::RowVector3d& p) const;
+    /// The line (index in the constructor's list) of the sample nearest p, if closer than the
+    /// width; -1 for none.
+    int nearestLine(const Eigen::RowVector3d& p) const;
     /// Whether there are no lines (no point lies in the band).
     bool empty() const { return cells_.empty(); }
 
@@ -37,13 +40,22 @@ private:
         }
     };
 
+    struct Sample
+    {
+        Eigen::RowVector3d position;
+        int line;
+    };
+
     Key cell(const Eigen::RowVector3d& p) const;
-    void insert(const Eigen::RowVector3d& p) { cells_[cell(p)].push_back(p); }
-    void sample(const Polyline& line);
+    void insert(const Eigen::RowVector3d& p, int line) { cells_[cell(p)].push_back({p, line}); }
+    void sample(const Polyline& line, int index);
+    /// Calls visit(sample) for the samples of the cells around p's; false when p's cell is
+    /// near no sample.
+    template <class Visit> bool forEachAround(const Eigen::RowVector3d& p, Visit visit) const;
     void markNearCells();
 
     double width_;
-    std::unordered_map<Key, std::vector<Eigen::RowVector3d>, KeyHash> cells_;
+    std::unordered_map<Key, std::vector<Sample>, KeyHash> cells_;
     /// The cells next to a sample cell (and those cells).
     std::unordered_set<Key, KeyHash> near_;
 };
