@@ -2,6 +2,7 @@
 #include "PartFamilies.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -308,9 +309,35 @@ double creaseDegrees(const TopoDS_Edge& edge, const TopoDS_Face& f1, const TopoD
     return largest;
 }
 
+/// `edges` in an order of their geometry alone: by the point at the middle of their parameter
+/// range, then by length. The shape's own order is not a property of the part: OpenCASCADE's
+/// hollowing (BRepOffsetAPI_MakeThickSolid) builds the same solid with its edges in an order
+/// that changes from run to run, so picking "the i-th edge" in it made a seed's part differ
+/// between runs (random part 165 came out in three shapes over eight runs).
+void sortByGeometry(std::vector<TopoDS_Edge>& edges)
+{
+    struct Keyed
+    {
+        std::array<double, 4> key;
+        TopoDS_Edge edge;
+    };
+    std::vector<Keyed> keyed;
+    keyed.reserve(edges.size());
+    for (const TopoDS_Edge& e : edges) {
+        const BRepAdaptor_Curve c(e);
+        const gp_Pnt m = c.Value(0.5 * (c.FirstParameter() + c.LastParameter()));
+        keyed.push_back({{m.X(), m.Y(), m.Z(), GCPnts_AbscissaPoint::Length(c)}, e});
+    }
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
+    for (size_t i = 0; i < edges.size(); ++i) {
+        edges[i] = keyed[i].edge;
+    }
+}
+
 /// The edges of `shape` between two faces meeting at a crease of at least
 /// RandomPartOptions::minCreaseDegrees (no tangent join, no seam), at least `minLength` long,
-/// in the shape's own order.
+/// in the order of sortByGeometry.
 std::vector<TopoDS_Edge> sharpEdges(const TopoDS_Shape& shape, double minLength,
                                     double minCreaseDegrees)
 {
@@ -336,6 +363,7 @@ std::vector<TopoDS_Edge> sharpEdges(const TopoDS_Shape& shape, double minLength,
             // No curve on a face: not an edge to round.
         }
     }
+    sortByGeometry(result);
     return result;
 }
 
@@ -914,7 +942,7 @@ TopoDS_Shape revolved(PartBuild& b, double area)
 
 // ---- Thin shell ----------------------------------------------------------------------------
 
-/// The edges of `shape` whose two ends satisfy `keep`.
+/// The edges of `shape` whose two ends satisfy `keep`, in the order of sortByGeometry.
 std::vector<TopoDS_Edge> edgesWhere(const TopoDS_Shape& shape,
                                     const std::function<bool(const gp_Pnt&, const gp_Pnt&)>& keep)
 {
@@ -928,6 +956,7 @@ std::vector<TopoDS_Edge> edgesWhere(const TopoDS_Shape& shape,
             result.push_back(e);
         }
     }
+    sortByGeometry(result);
     return result;
 }
 
