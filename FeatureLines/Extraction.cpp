@@ -14,6 +14,7 @@
 
 #include "FeatureLines/io/CloudIO.h"
 #include "FeatureLines/neighbourhoods/BalancedNeighbourhoods.h"
+#include "FeatureLines/neighbourhoods/SheetNeighbourhoods.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/BlendRadius.h"
@@ -274,6 +275,13 @@ CloudGeometry analyseCloud(const PointMatrix& P, const NeighbourOptions& options
     }
     releaseIdleThreads(); // samplingSpacing is serial
     g.spacing = samplingSpacing(g.neighbours);
+    // Thin walls: neighbours on the wall's other side are exchanged for points of the own
+    // sheet, and those normals are estimated again.
+    const std::vector<int> separated =
+        separateSheets(g.points, g.neighbours, g.spacing, options.sheets, options.threads);
+    if (!separated.empty()) {
+        pcaNormalsOfRows(g.points, g.neighbours, separated, g.normals.normals);
+    }
     return g;
 }
 

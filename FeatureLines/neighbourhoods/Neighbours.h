@@ -10,12 +10,35 @@
 
 namespace featurelines {
 
+/// How the neighbourhoods are kept to one sheet of a thin wall (SheetNeighbourhoods.h).
+struct SheetOptions
+{
+    /// Keep each neighbourhood to its point's own sheet (default true).
+    bool separate = true;
+    /// Points of the local plane fit: the point and its nearest this many (default 8).
+    int fitPoints = 8;
+    /// The least gap along the normal between two sheets, x the sampling spacing (1; merged
+    /// views misregistered by up to half a spacing each are one sheet).
+    double minGap = 1.0;
+    /// The gap is at least this many times the local fit's RMS residual, so that noise across
+    /// one sheet is not read as a second one (4).
+    double noiseGap = 4.0;
+    /// Two sheets' planes turn by at most this, degrees (25).
+    double maxTurnDegrees = 25.0;
+    /// A neighbourhood reaches another sheet when at least this many of its points lie across
+    /// the gap, all on one side (2).
+    int minAcross = 2;
+};
+
 struct NeighbourOptions
 {
     /// Neighbours per point, the point itself not counted; at least 3, below #P (default 16).
     int k = 16;
     /// Worker threads for the queries, 0 for OpenMP's default (default 0).
     int threads = 0;
+    /// Neighbours across a thin wall are exchanged for points of the own sheet
+    /// (analyseCloud; nearestNeighbours itself ignores it).
+    SheetOptions sheets;
 };
 
 struct Neighbourhoods
