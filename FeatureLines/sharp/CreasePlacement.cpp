@@ -49,7 +49,7 @@ class CreasePlacer
 {
 public:
     CreasePlacer(const CreasePlacementInput& in, const SharpEdgeOptions& options)
-        : P_(in.P), N_(in.N), sharp_(in.sharp), options_(options),
+        : P_(in.P), N_(in.N), normals_(in.normals), sharp_(in.sharp), options_(options),
           radius_(options.fitRadius * in.spacing), maxShift_(options.maxCreaseShift * in.spacing),
           sinMinAngle_(std::sin(options.minCreaseAngle * pi / 180.0)), stamp_(in.P.rows(), -1)
     {
@@ -68,6 +68,7 @@ private:
 
     const PointMatrix& P_;
     const Neighbourhoods& N_;
+    const NormalMatrix* normals_;
     const SharpEdges& sharp_;
     const SharpEdgeOptions& options_;
     double radius_;
@@ -168,12 +169,16 @@ std::vector<Plane> CreasePlacer::fitNearbyClusters(int node, const std::vector<i
         }
     }
     std::unordered_map<int, std::vector<Eigen::Vector3d>> byCluster;
+    std::unordered_map<int, std::vector<Eigen::Vector3d>> normalsByCluster;
     const double r2 = radius * radius;
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const int i = queue[q];
         const int c = s.cluster[i];
         if (!s.smallCluster[c] && (sharp_.isBoundary.empty() || !sharp_.isBoundary[i])) {
             byCluster[c].push_back(P_.row(i).transpose());
+            if (normals_ != nullptr) {
+                normalsByCluster[c].push_back(normals_->row(i).transpose());
+            }
         }
         for (int j = 0; j < N_.k(); ++j) {
             const int u = N_.indices(i, j);
@@ -193,7 +198,9 @@ std::vector<Plane> CreasePlacer::fitNearbyClusters(int node, const std::vector<i
     std::sort(clusters.begin(), clusters.end());
     std::vector<Plane> planes;
     for (int c : clusters) {
-        planes.push_back(fitPlane(byCluster[c], options_.minFitPoints));
+        planes.push_back(normals_ != nullptr ? fitPlaneByNormals(byCluster[c], normalsByCluster[c],
+                                                                  options_.minFitPoints)
+                                             : fitPlane(byCluster[c], options_.minFitPoints));
     }
     return planes;
 }

@@ -23,6 +23,9 @@ struct CreasePlacementInput
     const SharpEdges& sharp;
     /// The cloud's sampling spacing (samplingSpacing()).
     double spacing;
+    /// #P by 3 unit normals over N; when given, each face's plane is read from its points'
+    /// normals (fitPlaneByNormals), else from their positions (fitPlane).
+    const NormalMatrix* normals = nullptr;
 };
 
 /// The graph's lines and junctions, the sharp lines (sharpLineLabel) placed on the crease:

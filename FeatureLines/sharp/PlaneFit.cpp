@@ -2,12 +2,23 @@
 // Planes fitted to the points of one face, and where two of them meet.
 #include "FeatureLines/sharp/PlaneFit.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 namespace featurelines {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+/// The positions' plane is kept where noise tilts it by less than this (degrees).
+constexpr double agreeDegrees = 3.0;
+
+} // namespace
 
 Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
 {
@@ -47,6 +58,134 @@ Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
         plane = fit(kept);
     }
     return plane;
+}
+
+namespace {
+
+/// The normals' plane of fitPlaneByNormals.
+Plane planeOfNormals(const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<Eigen::Vector3d>& normals, int minPoints,
+                     double maxTurnDegrees)
+{
+    const auto dominant = [&](const std::vector<std::size_t>& use) {
+        Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+        for (std::size_t i : use) {
+            sum += normals[i] * normals[i].transpose();
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(sum);
+        return Eigen::Vector3d(solver.eigenvectors().col(2).normalized());
+    };
+    std::vector<std::size_t> all(points.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        all[i] = i;
+    }
+    if (points.empty() || normals.size() != points.size()) {
+        return fitPlane(points, minPoints);
+    }
+    const double cosine = std::cos(maxTurnDegrees * pi / 180.0);
+    Eigen::Vector3d normal = dominant(all);
+    std::vector<std::size_t> kept;
+    for (int pass = 0; pass < 2; ++pass) {
+        kept.clear();
+        for (std::size_t i : all) {
+            if (std::abs(normals[i].dot(normal)) >= cosine) {
+                kept.push_back(i);
+            }
+        }
+        if (static_cast<int>(kept.size()) < minPoints) {
+            return fitPlane(points, minPoints);
+        }
+        normal = dominant(kept);
+    }
+    // Reweighted by the turn from the face's direction, in units of the median turn: the
+    // normals near the edge, blended with the other face's over their neighbourhoods, all lean
+    // one way, while noise scatters the others evenly.
+    for (int pass = 0; pass < 6; ++pass) {
+        std::vector<double> turns;
+        for (std::size_t i : kept) {
+            turns.push_back(std::acos(std::min(1.0, std::abs(normals[i].dot(normal)))));
+        }
+        std::vector<double> sorted = turns;
+        std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2),
+                         sorted.end());
+        const double scale = 2.0 * sorted[sorted.size() / 2] + 1e-4;
+        Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+        for (std::size_t j = 0; j < kept.size(); ++j) {
+            const double u = turns[j] / scale;
+            const Eigen::Vector3d& n = normals[kept[j]];
+            sum += n * n.transpose() / (1.0 + u * u);
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(sum);
+        normal = solver.eigenvectors().col(2).normalized();
+    }
+    std::vector<double> offsets;
+    offsets.reserve(kept.size());
+    for (std::size_t i : kept) {
+        offsets.push_back(normal.dot(points[i]));
+    }
+    std::nth_element(offsets.begin(), offsets.begin() + static_cast<long>(offsets.size() / 2),
+                     offsets.end());
+    return Plane{normal, offsets[offsets.size() / 2]};
+}
+
+/// How far noise may tilt the least-squares plane of `points`: the ratio of their RMS distance
+/// to it over their spread along its smaller in-plane axis (the tangent of the tilt that noise
+/// of that RMS gives a strip of that width), over the points fitPlane keeps (within 2.5 times
+/// the RMS distance of the first plane: not the points of another face the segmentation gave
+/// to this one).
+double tiltOfPositions(const std::vector<Eigen::Vector3d>& points)
+{
+    const auto spread = [](const std::vector<const Eigen::Vector3d*>& use) {
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (const auto* p : use) {
+            mean += *p;
+        }
+        mean /= static_cast<double>(use.size());
+        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+        for (const auto* p : use) {
+            covariance += (*p - mean) * (*p - mean).transpose();
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(covariance, Eigen::ComputeEigenvectors);
+        return std::make_pair(solver, mean);
+    };
+    std::vector<const Eigen::Vector3d*> all;
+    for (const Eigen::Vector3d& p : points) {
+        all.push_back(&p);
+    }
+    const auto [first, mean] = spread(all);
+    const Eigen::Vector3d normal = first.eigenvectors().col(0);
+    const double limit = 2.5 * std::sqrt(std::max(0.0, first.eigenvalues()(0)) /
+                                         static_cast<double>(points.size()));
+    std::vector<const Eigen::Vector3d*> kept;
+    for (const auto* p : all) {
+        if (std::abs(normal.dot(*p - mean)) <= limit) {
+            kept.push_back(p);
+        }
+    }
+    if (kept.size() < 3) {
+        kept = all;
+    }
+    const Eigen::Vector3d values = spread(kept).first.eigenvalues().cwiseMax(0.0);
+    return values(1) > 0.0 ? std::sqrt(values(0) / values(1)) : 1.0;
+}
+
+} // namespace
+
+Plane fitPlaneByNormals(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<Eigen::Vector3d>& normals, int minPoints,
+                        double maxTurnDegrees)
+{
+    // Where the positions lie on their plane far closer than they spread across it, their own
+    // plane is the better one (exact on a clean face, where the normals near the edge still
+    // lean a little); noise across a narrow strip tilts it far beyond the normals' plane.
+    if (points.empty() || normals.size() != points.size() ||
+        tiltOfPositions(points) < std::tan(agreeDegrees * pi / 180.0)) {
+        return fitPlane(points, minPoints);
+    }
+    return planeOfNormals(points, normals, minPoints, maxTurnDegrees);
 }
 
 Eigen::Vector3d closestOnIntersection(const Plane& a, const Plane& b, const Eigen::Vector3d& c)

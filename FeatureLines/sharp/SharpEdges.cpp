@@ -126,7 +126,7 @@ SharpEdges extractSharpEdges(const PointMatrix& P, const NormalMatrix& normals,
     const ClusterGraph graph = sharpGraph(P, N, spacing, result, options);
     result.counts = graph.counts;
     ProfileTyping typed = typeByProfile(P, normals, result.segmentation, result.isBoundary,
-                                        placeOnCreases({P, N, graph, result, spacing}, options),
+                                        placeOnCreases({P, N, graph, result, spacing, &normals}, options),
                                         spacing, options.profile);
     result.network = std::move(typed.network);
     result.profiles = std::move(typed.profiles);

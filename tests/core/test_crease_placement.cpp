@@ -4,10 +4,13 @@
 // another label, stays where it is.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <vector>
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/sharp/CreasePlacement.h"
+#include "FeatureLines/sharp/PlaneFit.h"
 
 using namespace featurelines;
 
@@ -130,4 +133,51 @@ TEST(CreasePlacement, LinesOfOtherLabelsKeepTheirNodes)
     ASSERT_EQ(network.lines.size(), 1u);
     EXPECT_TRUE(network.lines[0].points.isApprox(
         lineOfNodes(lShape(), -0.6, 0.6, boundaryLineLabel).nodes));
+}
+
+// A face's strip beside an edge, 3 spacings wide, the normals of the points within a spacing
+// of the edge leaning towards the other face (their neighbourhoods reach it).
+std::vector<Eigen::Vector3d> stripNormals(double lean, double scatter, unsigned seed,
+                                          std::vector<Eigen::Vector3d>& points, double noise)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> along(0.0, noise), turn(0.0, scatter * M_PI / 180.0);
+    std::vector<Eigen::Vector3d> normals;
+    points.clear();
+    for (double x = 0.25; x < 3.0; x += 0.5) {
+        for (double y = 0.25; y < 10.0; y += 0.5) {
+            points.emplace_back(x, y, 2.0 + along(rng));
+            const double a = (x < 1.0 ? lean * M_PI / 180.0 : 0.0) + turn(rng);
+            normals.push_back(Eigen::Vector3d(std::sin(a), std::sin(turn(rng)), std::cos(a)).normalized());
+        }
+    }
+    return normals;
+}
+
+double turnFromZ(const Plane& plane)
+{
+    return std::acos(std::min(1.0, std::abs(plane.normal.z()))) * 180.0 / M_PI;
+}
+
+// Noise of 0.3 spacing along the normal and 3 degrees in the normals, the edge's normals
+// leaning 20 degrees: the normals' plane is the face's within a degree and a tenth of a
+// spacing. Clean, the edge's normals leaning 5 degrees: the positions fix the plane, and it is
+// the face's exactly.
+TEST(CreasePlacement, FacePlaneFromNormalsIgnoresNoiseAndTheEdgesBlend)
+{
+    std::vector<Eigen::Vector3d> points;
+    std::vector<Eigen::Vector3d> normals = stripNormals(20.0, 3.0, 5, points, 0.3);
+    const Plane noisy = fitPlaneByNormals(points, normals, 6);
+    EXPECT_LT(turnFromZ(noisy), 1.0);
+    EXPECT_NEAR(std::abs(noisy.offset), 2.0, 0.1);
+
+    normals = stripNormals(5.0, 0.0, 5, points, 0.0);
+    const Plane clean = fitPlaneByNormals(points, normals, 6);
+    EXPECT_LT(turnFromZ(clean), 1e-9);
+    EXPECT_NEAR(std::abs(clean.offset), 2.0, 1e-9);
+
+    // Too few normals near the face's direction: the positions' plane.
+    const std::vector<Eigen::Vector3d> few(points.begin(), points.begin() + 4);
+    const std::vector<Eigen::Vector3d> fewNormals(normals.begin(), normals.begin() + 4);
+    EXPECT_DOUBLE_EQ(fitPlaneByNormals(few, fewNormals, 6).offset, fitPlane(few, 6).offset);
 }

@@ -286,6 +286,36 @@ TEST(Extraction, NoisyCubeStillGivesTwelveSharpEdges)
     EXPECT_EQ(r.countLines(LineType::Sharp), 12);
     EXPECT_EQ(r.junctions.rows(), 8);
     EXPECT_EQ(r.countLines(LineType::Smooth), 0) << "noise on a plane is no patch";
+    // One network on the edges (issue 17): every line ends on a junction; 95 % of the vertices
+    // lie within half a spacing of the cube's nearest edge and all within one (the faces'
+    // planes read from their normals, which noise of 0.3 spacing tilts far less than it tilts
+    // a narrow strip's positions: read from the positions, 1.6 spacings).
+    const double half = 10.0, spacing = 0.5;
+    double farthest = 0.0;
+    int vertices = 0, within = 0;
+    for (const FeatureLine& line : r.lines) {
+        ASSERT_FALSE(line.closed);
+        for (const Eigen::Index end : {Eigen::Index(0), line.points.rows() - 1}) {
+            double nearest = std::numeric_limits<double>::infinity();
+            for (Eigen::Index j = 0; j < r.junctions.rows(); ++j) {
+                nearest = std::min(nearest, (r.junctions.row(j) - line.points.row(end)).norm());
+            }
+            EXPECT_LT(nearest, 1e-9);
+        }
+        for (Eigen::Index v = 0; v < line.points.rows(); ++v) {
+            std::array<double, 3> off;
+            for (int c = 0; c < 3; ++c) {
+                off[c] = std::abs(std::abs(line.points(v, c)) - half);
+            }
+            std::sort(off.begin(), off.end());
+            const double d = std::hypot(off[0], off[1]);
+            farthest = std::max(farthest, d);
+            ++vertices;
+            within += d <= 0.5 * spacing ? 1 : 0;
+        }
+    }
+    EXPECT_GE(within, 0.95 * vertices) << within << " of " << vertices;
+    EXPECT_LE(farthest, spacing);
 }
 
 TEST(Extraction, SphereHasNoFeatureLines)
