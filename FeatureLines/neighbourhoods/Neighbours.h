@@ -15,7 +15,7 @@ struct SheetOptions
 {
     /// Keep each neighbourhood to its point's own sheet (default true).
     bool separate = true;
-    /// Points of the local plane fit: the point and its nearest this many (default 8).
+    /// Points of the local plane fit: the point and its nearest this many, at most 31 (default 8).
     int fitPoints = 8;
     /// The least gap along the normal between two sheets, x the sampling spacing (1; merged
     /// views misregistered by up to half a spacing each are one sheet).

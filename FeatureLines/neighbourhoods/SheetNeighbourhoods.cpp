@@ -31,20 +31,30 @@ struct LocalPlane
 /// points leave its plane undefined (BalancedNeighbourhoods.h uses 0.02 over k points).
 constexpr double minSpread = 0.05;
 
-/// The least-squares plane of the points `rows` of P: its normal; `spread` gets the middle
-/// eigenvalue of their covariance over the largest (near 0 along one scan row, where the
-/// plane is not defined).
-Eigen::Vector3d planeNormal(const PointMatrix& P, const std::vector<int>& rows, double& spread)
+/// Points fitted per local plane at most (the point and its nearest neighbours).
+constexpr int maxFitted = 32;
+
+/// The least-squares plane of the first `count` of `x` where `use` is set: its normal, the
+/// points' mean, and `spread` the middle eigenvalue of their covariance over the largest (near 0
+/// along one scan row, where the plane is not defined).
+Eigen::Vector3d planeNormal(const Eigen::Vector3d* x, const bool* use, int count,
+                            Eigen::Vector3d& mean, double& spread)
 {
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int r : rows) {
-        mean += P.row(r).transpose();
+    mean.setZero();
+    int used = 0;
+    for (int r = 0; r < count; ++r) {
+        if (use[r]) {
+            mean += x[r];
+            ++used;
+        }
     }
-    mean /= double(rows.size());
+    mean /= double(used);
     Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-    for (int r : rows) {
-        const Eigen::Vector3d d = P.row(r).transpose() - mean;
-        C += d * d.transpose();
+    for (int r = 0; r < count; ++r) {
+        if (use[r]) {
+            const Eigen::Vector3d d = x[r] - mean;
+            C += d * d.transpose();
+        }
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(C, Eigen::ComputeEigenvectors);
@@ -53,48 +63,54 @@ Eigen::Vector3d planeNormal(const PointMatrix& P, const std::vector<int>& rows, 
     return solver.eigenvectors().col(0);
 }
 
+/// Point i's local plane: fitted to it and its m nearest neighbours (m < maxFitted), again
+/// without the outliers; its gap and whether it is defined. Allocates nothing: it runs for every
+/// point.
 LocalPlane localPlane(const PointMatrix& P, const Neighbourhoods& N, Eigen::Index i, int m,
                       double minGap, double noiseGap)
 {
-    std::vector<int> rows{static_cast<int>(i)};
+    Eigen::Vector3d x[maxFitted];
+    bool use[maxFitted];
+    double d[maxFitted];
+    double sorted[maxFitted];
+    const int count = m + 1;
+    const Eigen::Vector3d origin = P.row(i).transpose();
+    x[0].setZero();
     for (int j = 0; j < m; ++j) {
-        rows.push_back(N.indices(i, j));
+        x[j + 1] = P.row(N.indices(i, j)).transpose() - origin;
     }
-    const auto distances = [&](const std::vector<int>& of, const Eigen::Vector3d& n) {
-        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-        for (int r : of) {
-            mean += P.row(r).transpose();
-        }
-        mean /= double(of.size());
-        std::vector<double> d;
-        d.reserve(of.size());
-        for (int r : of) {
-            d.push_back(std::abs(n.dot(P.row(r).transpose() - mean)));
-        }
-        return d;
-    };
+    std::fill(use, use + count, true);
     LocalPlane plane;
     double spread = 0.0;
-    plane.normal = planeNormal(P, rows, spread);
-    std::vector<double> d = distances(rows, plane.normal);
-    std::vector<double> sorted = d;
-    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-    const double cut = std::max(3.0 * 1.4826 * sorted[sorted.size() / 2], 0.5 * minGap);
-    std::vector<int> kept;
-    for (size_t r = 0; r < rows.size(); ++r) {
-        if (d[r] <= cut) {
-            kept.push_back(rows[r]);
-        }
+    Eigen::Vector3d mean;
+    plane.normal = planeNormal(x, use, count, mean, spread);
+    for (int r = 0; r < count; ++r) {
+        d[r] = std::abs(plane.normal.dot(x[r] - mean));
+        sorted[r] = d[r];
     }
-    if (kept.size() < rows.size() && kept.size() >= 5) {
-        plane.normal = planeNormal(P, kept, spread);
-        d = distances(kept, plane.normal);
+    std::nth_element(sorted, sorted + count / 2, sorted + count);
+    const double cut = std::max(3.0 * 1.4826 * sorted[count / 2], 0.5 * minGap);
+    int kept = 0;
+    for (int r = 0; r < count; ++r) {
+        use[r] = d[r] <= cut;
+        kept += use[r] ? 1 : 0;
+    }
+    if (kept < count && kept >= 5) {
+        plane.normal = planeNormal(x, use, count, mean, spread);
+        for (int r = 0; r < count; ++r) {
+            d[r] = std::abs(plane.normal.dot(x[r] - mean));
+        }
+    } else {
+        std::fill(use, use + count, true);
+        kept = count;
     }
     double squares = 0.0;
-    for (double v : d) {
-        squares += v * v;
+    for (int r = 0; r < count; ++r) {
+        if (use[r]) {
+            squares += d[r] * d[r];
+        }
     }
-    const double rms = std::sqrt(squares / double(std::max<size_t>(1, d.size() - 3)));
+    const double rms = std::sqrt(squares / double(std::max(1, kept - 3)));
     plane.gap = std::max(minGap, noiseGap * rms);
     plane.defined = spread >= minSpread;
     return plane;
@@ -122,7 +138,7 @@ std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double 
     if (!options.separate || n == 0) {
         return {};
     }
-    const int m = std::min(options.fitPoints, k);
+    const int m = std::min({options.fitPoints, k, maxFitted - 1});
     const int workers = threadCount(threads);
     std::vector<LocalPlane> planes(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(workers) schedule(static, 1024)
