@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -18,9 +17,15 @@ constexpr double pi = 3.14159265358979323846;
 /// The positions' plane is kept where noise tilts it by less than this (degrees).
 constexpr double agreeDegrees = 3.0;
 
-} // namespace
+/// fitPlane's plane, and the eigenvalues (increasing) of the covariance of the points it was
+/// last fitted to.
+struct TrimmedFit
+{
+    Plane plane;
+    Eigen::Vector3d eigenvalues;
+};
 
-Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
+TrimmedFit trimmedFit(const std::vector<Eigen::Vector3d>& points, int minPoints)
 {
     auto fit = [](const std::vector<const Eigen::Vector3d*>& use) {
         Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -36,13 +41,14 @@ Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
         solver.computeDirect(covariance);
         const Eigen::Vector3d normal = solver.eigenvectors().col(0).normalized();
-        return Plane{normal, normal.dot(mean)};
+        return TrimmedFit{Plane{normal, normal.dot(mean)}, solver.eigenvalues()};
     };
     std::vector<const Eigen::Vector3d*> use;
     for (const auto& p : points) {
         use.push_back(&p);
     }
-    Plane plane = fit(use);
+    TrimmedFit result = fit(use);
+    const Plane& plane = result.plane;
     double sum = 0.0;
     for (const auto* p : use) {
         sum += std::pow(plane.normal.dot(*p) - plane.offset, 2);
@@ -55,9 +61,16 @@ Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
         }
     }
     if (static_cast<int>(kept.size()) >= minPoints && kept.size() < use.size()) {
-        plane = fit(kept);
+        result = fit(kept);
     }
-    return plane;
+    return result;
+}
+
+} // namespace
+
+Plane fitPlane(const std::vector<Eigen::Vector3d>& points, int minPoints)
+{
+    return trimmedFit(points, minPoints).plane;
 }
 
 namespace {
@@ -79,9 +92,6 @@ Plane planeOfNormals(const std::vector<Eigen::Vector3d>& points,
     std::vector<std::size_t> all(points.size());
     for (std::size_t i = 0; i < all.size(); ++i) {
         all[i] = i;
-    }
-    if (points.empty() || normals.size() != points.size()) {
-        return fitPlane(points, minPoints);
     }
     const double cosine = std::cos(maxTurnDegrees * pi / 180.0);
     Eigen::Vector3d normal = dominant(all);
@@ -130,48 +140,6 @@ Plane planeOfNormals(const std::vector<Eigen::Vector3d>& points,
     return Plane{normal, offsets[offsets.size() / 2]};
 }
 
-/// How far noise may tilt the least-squares plane of `points`: the ratio of their RMS distance
-/// to it over their spread along its smaller in-plane axis (the tangent of the tilt that noise
-/// of that RMS gives a strip of that width), over the points fitPlane keeps (within 2.5 times
-/// the RMS distance of the first plane: not the points of another face the segmentation gave
-/// to this one).
-double tiltOfPositions(const std::vector<Eigen::Vector3d>& points)
-{
-    const auto spread = [](const std::vector<const Eigen::Vector3d*>& use) {
-        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-        for (const auto* p : use) {
-            mean += *p;
-        }
-        mean /= static_cast<double>(use.size());
-        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-        for (const auto* p : use) {
-            covariance += (*p - mean) * (*p - mean).transpose();
-        }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-        solver.computeDirect(covariance, Eigen::ComputeEigenvectors);
-        return std::make_pair(solver, mean);
-    };
-    std::vector<const Eigen::Vector3d*> all;
-    for (const Eigen::Vector3d& p : points) {
-        all.push_back(&p);
-    }
-    const auto [first, mean] = spread(all);
-    const Eigen::Vector3d normal = first.eigenvectors().col(0);
-    const double limit = 2.5 * std::sqrt(std::max(0.0, first.eigenvalues()(0)) /
-                                         static_cast<double>(points.size()));
-    std::vector<const Eigen::Vector3d*> kept;
-    for (const auto* p : all) {
-        if (std::abs(normal.dot(*p - mean)) <= limit) {
-            kept.push_back(p);
-        }
-    }
-    if (kept.size() < 3) {
-        kept = all;
-    }
-    const Eigen::Vector3d values = spread(kept).first.eigenvalues().cwiseMax(0.0);
-    return values(1) > 0.0 ? std::sqrt(values(0) / values(1)) : 1.0;
-}
-
 } // namespace
 
 Plane fitPlaneByNormals(const std::vector<Eigen::Vector3d>& points,
@@ -181,9 +149,15 @@ Plane fitPlaneByNormals(const std::vector<Eigen::Vector3d>& points,
     // Where the positions lie on their plane far closer than they spread across it, their own
     // plane is the better one (exact on a clean face, where the normals near the edge still
     // lean a little); noise across a narrow strip tilts it far beyond the normals' plane.
+    // The tilt is the ratio of the points' RMS distance to their plane over their spread along
+    // its smaller in-plane axis, over the points fitPlane keeps (not the points of another face
+    // the segmentation gave to this one).
+    const TrimmedFit positions = trimmedFit(points, minPoints);
+    const Eigen::Vector3d values = positions.eigenvalues.cwiseMax(0.0);
+    const double tilt = values(1) > 0.0 ? std::sqrt(values(0) / values(1)) : 1.0;
     if (points.empty() || normals.size() != points.size() ||
-        tiltOfPositions(points) < std::tan(agreeDegrees * pi / 180.0)) {
-        return fitPlane(points, minPoints);
+        tilt < std::tan(agreeDegrees * pi / 180.0)) {
+        return positions.plane;
     }
     return planeOfNormals(points, normals, minPoints, maxTurnDegrees);
 }
