@@ -152,10 +152,10 @@ std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double 
         std::vector<double> gaps(static_cast<size_t>(n));
 #pragma omp parallel for num_threads(workers) schedule(static, 1024)
         for (Eigen::Index i = 0; i < n; ++i) {
-            double near[64];
+            double near[maxFitted]; // the point and its m < maxFitted nearest
             int count = 0;
             near[count++] = planes[static_cast<size_t>(i)].gap;
-            for (int j = 0; j < m && count < 64; ++j) {
+            for (int j = 0; j < m; ++j) {
                 near[count++] = planes[static_cast<size_t>(N.indices(i, j))].gap;
             }
             std::nth_element(near, near + count / 2, near + count);

@@ -168,16 +168,21 @@ std::vector<Plane> CreasePlacer::fitNearbyClusters(int node, const std::vector<i
             queue.push_back(seed);
         }
     }
-    std::unordered_map<int, std::vector<Eigen::Vector3d>> byCluster;
-    std::unordered_map<int, std::vector<Eigen::Vector3d>> normalsByCluster;
+    struct Members
+    {
+        std::vector<Eigen::Vector3d> points;
+        std::vector<Eigen::Vector3d> normals; // empty without the cloud's normals
+    };
+    std::unordered_map<int, Members> byCluster;
     const double r2 = radius * radius;
     for (std::size_t q = 0; q < queue.size(); ++q) {
         const int i = queue[q];
         const int c = s.cluster[i];
         if (!s.smallCluster[c] && (sharp_.isBoundary.empty() || !sharp_.isBoundary[i])) {
-            byCluster[c].push_back(P_.row(i).transpose());
+            Members& members = byCluster[c];
+            members.points.push_back(P_.row(i).transpose());
             if (normals_ != nullptr) {
-                normalsByCluster[c].push_back(normals_->row(i).transpose());
+                members.normals.push_back(normals_->row(i).transpose());
             }
         }
         for (int j = 0; j < N_.k(); ++j) {
@@ -191,16 +196,18 @@ std::vector<Plane> CreasePlacer::fitNearbyClusters(int node, const std::vector<i
     // In cluster order, so the result does not depend on the hash map's order.
     std::vector<int> clusters;
     for (const auto& entry : byCluster) {
-        if (static_cast<int>(entry.second.size()) >= options_.minFitPoints) {
+        if (static_cast<int>(entry.second.points.size()) >= options_.minFitPoints) {
             clusters.push_back(entry.first);
         }
     }
     std::sort(clusters.begin(), clusters.end());
     std::vector<Plane> planes;
     for (int c : clusters) {
-        planes.push_back(normals_ != nullptr ? fitPlaneByNormals(byCluster[c], normalsByCluster[c],
-                                                                  options_.minFitPoints)
-                                             : fitPlane(byCluster[c], options_.minFitPoints));
+        const Members& members = byCluster[c];
+        planes.push_back(normals_ != nullptr
+                             ? fitPlaneByNormals(members.points, members.normals,
+                                                 options_.minFitPoints)
+                             : fitPlane(members.points, options_.minFitPoints));
     }
     return planes;
 }

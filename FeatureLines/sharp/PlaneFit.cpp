@@ -80,10 +80,15 @@ Plane planeOfNormals(const std::vector<Eigen::Vector3d>& points,
                      const std::vector<Eigen::Vector3d>& normals, int minPoints,
                      double maxTurnDegrees)
 {
-    const auto dominant = [&](const std::vector<std::size_t>& use) {
+    // The dominant direction of the normals `use`, each n n^T divided by its entry of
+    // `divisors` (1 when there is none).
+    const auto dominant = [&](const std::vector<std::size_t>& use,
+                              const std::vector<double>& divisors = {}) {
         Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
-        for (std::size_t i : use) {
-            sum += normals[i] * normals[i].transpose();
+        for (std::size_t j = 0; j < use.size(); ++j) {
+            const Eigen::Vector3d& n = normals[use[j]];
+            sum += divisors.empty() ? Eigen::Matrix3d(n * n.transpose())
+                                    : Eigen::Matrix3d(n * n.transpose() / divisors[j]);
         }
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
         solver.computeDirect(sum);
@@ -120,15 +125,12 @@ Plane planeOfNormals(const std::vector<Eigen::Vector3d>& points,
         std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2),
                          sorted.end());
         const double scale = 2.0 * sorted[sorted.size() / 2] + 1e-4;
-        Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
-        for (std::size_t j = 0; j < kept.size(); ++j) {
-            const double u = turns[j] / scale;
-            const Eigen::Vector3d& n = normals[kept[j]];
-            sum += n * n.transpose() / (1.0 + u * u);
+        std::vector<double> divisors;
+        for (double turn : turns) {
+            const double u = turn / scale;
+            divisors.push_back(1.0 + u * u);
         }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-        solver.computeDirect(sum);
-        normal = solver.eigenvectors().col(2).normalized();
+        normal = dominant(kept, divisors);
     }
     std::vector<double> offsets;
     offsets.reserve(kept.size());
