@@ -237,11 +237,11 @@ Extraction::Extraction()
     ADD_PROPERTY_TYPE(ClosedLineCount, (0), "Output", outputType,
                       "Closed wires; the others end on junctions where three or more lines meet.");
     ADD_PROPERTY_TYPE(SmoothLineRegions, (), "Output", outputType,
-                      "Per wire of SmoothWires: its smooth region; -1 for the borders of a "
-                      "blend typed by its profile (they lie in no region).");
+                      "Per wire of SmoothWires: its smooth region; -1 for the lines of a blend "
+                      "typed by its profile (they lie in no region).");
     ADD_PROPERTY_TYPE(SmoothLineThresholds, (), "Output", outputType,
                       "Per wire of SmoothWires: the curvature threshold it borders; NaN for the "
-                      "borders of a blend typed by its profile.");
+                      "lines of a blend typed by its profile.");
     ADD_PROPERTY_TYPE(SharpAngles, (), "Output", outputType,
                       "Per wire of SharpWires: the angle between the two faces meeting on it, in "
                       "degrees inside their wedge (90 on a box edge, near 180 for a shallow "

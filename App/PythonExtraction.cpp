@@ -151,7 +151,7 @@ void Module::addExtractionFunctions()
         "  'patch_borders': {patch: [outer wire, hole wires...]} on the same edges;\n"
         "      'open_patches': {patch: why its border is not closed}\n"
         "  'smooth_regions', 'smooth_thresholds': per smooth wire, its region and threshold\n"
-        "      (-1 and None for the borders of a blend typed by its profile)\n"
+        "      (-1 and None for the lines of a blend typed by its profile)\n"
         "  'sharp_angles': per sharp wire, the angle between the faces meeting on it (degrees\n"
         "      inside their wedge); 'smooth_blend_radii': per smooth wire, the radius of the\n"
         "      blend it borders; None where not estimated\n"

@@ -49,7 +49,7 @@ struct FeatureLine
     /// where no two faces were fitted, and for smooth and boundary lines.
     double angle = std::numeric_limits<double>::quiet_NaN();
     /// Smooth lines: the estimated radius of the blend the line borders (length unit), from the
-    /// profile fitted across it (the borders of a blend typed by its profile) or from the
+    /// profile fitted across it (the lines of a blend typed by its profile) or from the
     /// largest principal curvature beside it (blendRadii()); NaN where none was estimated, and
     /// for sharp and boundary lines.
     double blendRadius = std::numeric_limits<double>::quiet_NaN();

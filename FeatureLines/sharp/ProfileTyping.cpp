@@ -37,6 +37,9 @@ struct Station
     Eigen::Vector3d side[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     /// Radians: the angle between side[0] and side[1].
     double opening = 0.0;
+    /// Spacings: the distance from the line's vertex to the apex (0 for a line on its crease;
+    /// several spacings at the middle of a blend whose faces meet at an acute angle).
+    double apexDistance = 0.0;
     /// The profile's truncated squared residual per radius tried (radiusStep apart, from 0).
     std::vector<float> cost;
     /// The profile (spacings), in the frame of the side first found (x along it).
@@ -249,7 +252,9 @@ Station StationFitter::fit(const Eigen::Vector3d& centre, const Eigen::Vector3d&
         }
     }
     // By decreasing size, ties to the lower first point: the largest face, and the largest
-    // after it that turns from it by minTurn.
+    // after it that turns from it by minTurn, each a face whose plane passes within
+    // maxFaceOffset of the vertex (the line lies on both of its faces; a plane farther off is
+    // the other sheet of a thin wall or a face beyond a step).
     std::sort(faces.begin(), faces.end(), [](const auto& u, const auto& v) {
         return u.size() != v.size() ? u.size() > v.size() : u.front() < v.front();
     });
@@ -264,6 +269,9 @@ Station StationFitter::fit(const Eigen::Vector3d& centre, const Eigen::Vector3d&
             mean += points.back();
         }
         const Plane p = fitPlane(points, options_.minFacePoints);
+        if (std::abs(p.normal.dot(centre) - p.offset) > options_.maxFaceOffset * spacing_) {
+            continue;
+        }
         if (face[0] < 0) {
             face[0] = static_cast<int>(f);
             plane[0] = p;
@@ -281,6 +289,7 @@ Station StationFitter::fit(const Eigen::Vector3d& centre, const Eigen::Vector3d&
     const Eigen::Vector3d cross = plane[0].normal.cross(plane[1].normal);
     const Eigen::Vector3d along = cross.normalized();
     station.apex = closestOnIntersection(plane[0], plane[1], centre);
+    station.apexDistance = (station.apex - centre).norm() / spacing_;
     for (int f = 0; f < 2; ++f) {
         Eigen::Vector3d s = along.cross(plane[f].normal).normalized();
         if (s.dot(centroid[f] - station.apex) < 0.0) {
@@ -604,19 +613,25 @@ ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
             line.closed ? 0.0 : std::min(options.reach * spacing, 0.25 * arc.back());
         std::vector<int> valid;
         std::vector<double> openings;
+        std::vector<double> apexDistances;
         for (size_t i = 0; i < m; ++i) {
             if (stations[i].valid && arc[i] >= clear && arc.back() - arc[i] >= clear) {
                 valid.push_back(static_cast<int>(i));
                 openings.push_back(stations[i].opening);
+                apexDistances.push_back(stations[i].apexDistance);
             }
         }
         profile.stations = static_cast<int>(valid.size());
         if (!valid.empty()) {
             const double opening = median(openings);
             profile.angle = opening * 180.0 / pi;
-            // Radii whose tangent points stay a spacing and a half inside the reach.
+            // Radii whose tangent points stay a spacing and a half inside the reach of the
+            // line's vertices: a tangent point lies r / tan(opening / 2) from the apex, and
+            // the vertices lie about the median apex distance from it towards the faces (at
+            // the middle of a blend between faces at an acute angle, the apex is far out).
             const int radii = static_cast<int>(stations[valid[0]].cost.size());
-            const double largest = (options.reach - 1.5) * std::tan(opening / 2.0);
+            const double largest =
+                (options.reach - 1.5 + median(apexDistances)) * std::tan(opening / 2.0);
             last = std::clamp(static_cast<int>(largest / radiusStep), 0, radii - 1);
             std::vector<double> summed;
             const int best = bestRadius(stations, valid, last, &summed);
@@ -628,17 +643,27 @@ ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
             }
             profile.significance =
                 summed[best] > 0.0 ? (summed[0] - summed[best]) / (summed[best] / points) : 0.0;
-            if (profile.radius >= options.minBlendRadius * spacing &&
+            if (profile.radius >= options.minNarrowRadius * spacing &&
                 profile.significance >= options.minSignificance) {
                 const FlatCut cut = bestFlatCut(stations, valid, last, options);
                 profile.chamferGain = summed[0] > 0.0 ? (summed[0] - cut.cost) / summed[0] : 0.0;
                 profile.setback[0] = cut.setback[0] * spacing;
                 profile.setback[1] = cut.setback[1] * spacing;
             }
-            profile.blend = options.splitBlends && valid.size() >= 3 &&
-                            profile.radius >= options.minBlendRadius * spacing &&
-                            profile.significance >= options.minSignificance &&
-                            profile.gain >= options.minShareOfCut * profile.chamferGain;
+            const bool round = valid.size() >= 3 &&
+                               profile.radius >= options.minNarrowRadius * spacing &&
+                               profile.significance >= options.minSignificance &&
+                               profile.gain >= options.minShareOfCut * profile.chamferGain;
+            profile.blend = options.splitBlends && round;
+            profile.narrow = profile.blend && profile.radius < options.minBlendRadius * spacing;
+        }
+        if (profile.narrow) {
+            // Too narrow for two borders: one smooth line where the sharp line ran.
+            Polyline narrow = line;
+            narrow.label = blendBorderLabel;
+            result.network.lines.push_back(std::move(narrow));
+            result.profiles.push_back(profile);
+            continue;
         }
         if (!profile.blend) {
             result.network.lines.push_back(line);

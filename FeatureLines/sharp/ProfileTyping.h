@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Typing by profile (beyond the papers): across every sharp line, the two faces' planes and the
 // cloud's profile between them tell a crease from a small blend, which becomes two smooth lines
-// on its borders. Design: docs/design/profile-typing.md.
+// on its borders (one smooth line along it when narrower than 1.2 spacings). Design:
+// docs/design/profile-typing.md.
 #pragma once
 
 #include <limits>
@@ -30,8 +31,8 @@ struct ProfileTypingOptions
     double residualLimit = 1.5;
     /// Spacings: the largest blend radius tried (12).
     double maxRadius = 12.0;
-    /// Spacings: a line is a blend when its fitted radius is at least this (1.2) ...
-    double minBlendRadius = 1.2;
+    /// Spacings: a line is a blend when its fitted radius is at least minNarrowRadius (0.6) ...
+    double minNarrowRadius = 0.6;
     /// ... the blend lowers the crease model's squared residual by at least this many times the
     /// blend's own mean squared residual per point (a likelihood ratio: noise alone lowers it by
     /// about one) (30) ...
@@ -39,6 +40,13 @@ struct ProfileTypingOptions
     /// ... and the blend explains at least this share of what the best flat cut across the
     /// corner explains (0.9): a cut that fits far better is a chamfer or a narrow third face.
     double minShareOfCut = 0.9;
+    /// Spacings: a blend of radius at least this (1.2) becomes its two borders; a narrower one
+    /// (from minNarrowRadius), whose borders would lie under two spacings apart, becomes one
+    /// smooth line where the sharp line ran, carrying its radius.
+    double minBlendRadius = 1.2;
+    /// Spacings: a face's fitted plane must pass within this distance of the line's vertex
+    /// (2.5); a plane farther off is the other sheet of a thin wall or a face beyond a step.
+    double maxFaceOffset = 2.5;
     /// Degrees: faces closer to parallel than this define no crease, and the station is not
     /// fitted (15).
     double minTurn = 15.0;
@@ -74,14 +82,17 @@ struct LineProfile
     double chamferGain = std::numeric_limits<double>::quiet_NaN();
     double setback[2] = {std::numeric_limits<double>::quiet_NaN(),
                          std::numeric_limits<double>::quiet_NaN()};
-    /// The line was typed a blend and replaced by its two borders.
+    /// The line was typed a blend: replaced by its two borders, or by one smooth line when
+    /// `narrow` (radius under minBlendRadius).
     bool blend = false;
+    bool narrow = false;
 };
 
 struct ProfileTyping
 {
     /// The network with every blend's sharp line replaced by its two borders (label
-    /// blendBorderLabel), which end where the sharp line ended.
+    /// blendBorderLabel), which end where the sharp line ended, or a narrow blend's by one
+    /// line of that label in its place.
     LineNetwork network;
     /// Per line of `network`: its profile; a border carries the profile of its blend.
     std::vector<LineProfile> profiles;
@@ -89,11 +100,13 @@ struct ProfileTyping
 
 /// Types the sharp lines (label sharpLineLabel) of `network` by the cloud's profile across
 /// them. At every vertex the two largest faces within reach (the segmentation's large clusters,
-/// a cluster split in two where its normals turn by minTurn) are fitted with planes; the points
+/// a cluster split in two where its normals turn by minTurn) whose planes pass within
+/// maxFaceOffset of it are fitted with planes; the points
 /// near the plane across the line then fit either the two planes meeting in a crease or the same
 /// planes joined by a circular blend tangent to both, of the radius that fits best over the line. A
 /// line whose radius and gain pass the options' limits is replaced by the blend's two tangent
-/// lines. Other lines are copied; every line gets its profile.
+/// lines, or, under minBlendRadius, relabelled as one blend line. Other lines are copied;
+/// every line gets its profile.
 ///   P        #P by 3 points
 ///   normals  #P by 3 unit normals (unoriented), or empty: then a face is one cluster
 ///   seg      the sharp stage's segmentation (its large clusters are the faces)

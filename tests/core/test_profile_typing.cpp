@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Typing by profile on an L of two perpendicular faces joined by a crease or by a round of
 // radius r: the round's sharp line becomes its two tangent lines, r is estimated, the crease
-// stays one sharp line whose angle is 90 degrees; a narrow third face on one side is no blend.
+// stays one sharp line whose angle is 90 degrees; a narrow third face on one side is no blend;
+// a round under 1.2 spacings is one smooth line; the rounded nose of an acute wedge gives its
+// borders; the other sheet of a thin wall is no face.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,6 +26,35 @@ struct Swept
     LineNetwork network;
 };
 
+/// The swept cloud of `points` (each in cluster `cluster[i]`; clusters 0, 1 and 3 are faces,
+/// 2 is the small cluster between them) with the sharp stage's line along x through `line` in
+/// (y, z), one spacing apart, from x = 0 to `length`.
+Swept swept(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& cluster,
+            double length, const Eigen::Vector2d& line)
+{
+    Swept s;
+    s.P.resize(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) {
+        s.P.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    }
+    s.seg.cluster = cluster;
+    s.seg.clusterSize = {0, 0, 0, 0};
+    for (int c : s.seg.cluster) {
+        ++s.seg.clusterSize[c];
+    }
+    s.seg.smallCluster = {0, 0, 1, 0};
+    Polyline l;
+    const int m = static_cast<int>(length) + 1;
+    l.points.resize(m, 3);
+    for (int x = 0; x < m; ++x) {
+        l.points.row(x) << x, line.x(), line.y();
+    }
+    l.label = sharpLineLabel;
+    s.network.lines.push_back(l);
+    s.network.junctions.resize(0, 3);
+    return s;
+}
+
 /// `profile` swept along x, one spacing apart, each profile point in its cluster (0: face A,
 /// z = 0; 1: face B, y = 0; 2: the small cluster between them). `noise` moves the faces'
 /// points along their normals (a seeded normal distribution); the sharp stage's line runs
@@ -34,7 +65,7 @@ Swept sweep(const std::vector<Eigen::Vector2d>& profile, const std::vector<int>&
     std::mt19937 rng(seed);
     std::normal_distribution<double> gauss(0.0, 1.0);
     std::vector<Eigen::Vector3d> points;
-    Swept s;
+    std::vector<int> clusters;
     for (int x = 0; x <= static_cast<int>(length); ++x) {
         for (size_t i = 0; i < profile.size(); ++i) {
             // Normals of the faces: z for face A, y for face B, none added on the cut.
@@ -48,29 +79,55 @@ Swept sweep(const std::vector<Eigen::Vector2d>& profile, const std::vector<int>&
                 }
             }
             points.push_back(p);
-            s.seg.cluster.push_back(cluster[i]);
+            clusters.push_back(cluster[i]);
         }
     }
-    s.P.resize(static_cast<Eigen::Index>(points.size()), 3);
-    for (size_t i = 0; i < points.size(); ++i) {
-        s.P.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    return swept(points, clusters, length, Eigen::Vector2d::Zero());
+}
+
+/// A piece of a profile: a polyline in (y, z) and its cluster.
+struct Piece
+{
+    std::vector<Eigen::Vector2d> points;
+    int cluster;
+};
+
+/// The pieces swept along x, one spacing apart, each sampled one spacing apart along its
+/// length from an offset that moves by the golden ratio's fraction from one x to the next:
+/// across the slices every part of a narrow round is sampled, as in a scanned cloud, where a
+/// regular grid would only ever sample the same few places.
+Swept staggered(const std::vector<Piece>& pieces, double length, const Eigen::Vector2d& line)
+{
+    std::vector<Eigen::Vector3d> points;
+    std::vector<int> clusters;
+    for (int x = 0; x <= static_cast<int>(length); ++x) {
+        const double offset = std::fmod(0.6180339887 * x, 1.0);
+        for (const Piece& piece : pieces) {
+            double at = offset;
+            for (size_t k = 1; k < piece.points.size(); ++k) {
+                const Eigen::Vector2d a = piece.points[k - 1];
+                const double step = (piece.points[k] - a).norm();
+                for (; at < step; at += 1.0) {
+                    const Eigen::Vector2d q = a + (piece.points[k] - a) * (at / step);
+                    points.emplace_back(x, q.x(), q.y());
+                    clusters.push_back(piece.cluster);
+                }
+                at -= step;
+            }
+        }
     }
-    s.seg.clusterSize = {0, 0, 0};
-    for (int c : s.seg.cluster) {
-        ++s.seg.clusterSize[c];
+    return swept(points, clusters, length, line);
+}
+
+/// A circular arc of radius r about `centre` from angle t0 to t1 (radians), as a fine polyline.
+std::vector<Eigen::Vector2d> arc(const Eigen::Vector2d& centre, double r, double t0, double t1)
+{
+    std::vector<Eigen::Vector2d> points;
+    for (int i = 0; i <= 100; ++i) {
+        const double t = t0 + (t1 - t0) * i / 100.0;
+        points.push_back(centre + r * Eigen::Vector2d(std::cos(t), std::sin(t)));
     }
-    s.seg.smallCluster = {0, 0, 1};
-    // The sharp stage's line: along the corner, one spacing apart.
-    Polyline line;
-    const int m = static_cast<int>(length) + 1;
-    line.points.resize(m, 3);
-    for (int x = 0; x < m; ++x) {
-        line.points.row(x) << x, 0.0, 0.0;
-    }
-    line.label = sharpLineLabel;
-    s.network.lines.push_back(line);
-    s.network.junctions.resize(0, 3);
-    return s;
+    return points;
 }
 
 /// Face A from y = -12 to -r, a quarter circle of radius r to (0, r), face B up to z = 12; the
@@ -232,6 +289,84 @@ TEST(ProfileTyping, FacesOfOneClusterAreToldApartByTheirNormals)
     const ProfileTyping t = typeByProfile(s.P, normals, s.seg, {}, s.network, 1.0);
     ASSERT_EQ(t.network.lines.size(), 2u);
     EXPECT_NEAR(t.profiles[0].radius, 3.0, 0.3);
+}
+
+/// Face A along z = 0 from y = -12, a quarter round of radius r, face B along y = 0 up to
+/// z = 12 (r = 0: a crease), staggered.
+Swept staggeredL(double r)
+{
+    std::vector<Piece> pieces = {{{{-12.0, 0.0}, {-r, 0.0}}, 0}, {{{0.0, r}, {0.0, 12.0}}, 1}};
+    if (r > 0.0) {
+        pieces.push_back({arc({-r, r}, r, -M_PI / 2.0, 0.0), 2});
+    }
+    return staggered(pieces, 40.0, Eigen::Vector2d::Zero());
+}
+
+TEST(ProfileTyping, RoundTooNarrowForTwoBordersIsOneSmoothLineWithItsRadius)
+{
+    // A round of 0.9 spacing departs from the crease by 0.37 spacing: the profile sees it, but
+    // its borders would lie 1.3 spacings apart.
+    const Swept s = staggeredL(0.9);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_EQ(t.network.lines[0].label, blendBorderLabel);
+    EXPECT_TRUE(t.profiles[0].blend);
+    EXPECT_TRUE(t.profiles[0].narrow);
+    EXPECT_NEAR(t.profiles[0].radius, 0.9, 0.3);
+    EXPECT_TRUE(t.network.lines[0].points.isApprox(s.network.lines[0].points));
+    // The same sampling of a crease stays one sharp line.
+    const Swept c = staggeredL(0.0);
+    const ProfileTyping u = typeByProfile(c.P, {}, c.seg, {}, c.network, 1.0);
+    ASSERT_EQ(u.network.lines.size(), 1u);
+    EXPECT_EQ(u.network.lines[0].label, sharpLineLabel);
+    EXPECT_FALSE(u.profiles[0].blend);
+}
+
+TEST(ProfileTyping, RoundedNoseOfAnAcuteWedgeGivesItsTwoBorders)
+{
+    // Faces 25 degrees apart joined by a round of 2 spacings: the apex lies 7 spacings beyond
+    // the nose, on which the sharp stage's line runs, and the tangent points 9 from the apex.
+    const double opening = 25.0 * M_PI / 180.0;
+    const double r = 2.0;
+    const Eigen::Vector2d u0(-1.0, 0.0);
+    const Eigen::Vector2d u1(-std::cos(opening), std::sin(opening));
+    const Eigen::Vector2d bisector = (u0 + u1).normalized();
+    const Eigen::Vector2d centre = bisector * (r / std::sin(opening / 2.0));
+    const double t = r / std::tan(opening / 2.0);
+    const Eigen::Vector2d nose = centre - r * bisector;
+    std::vector<Piece> pieces = {{{u0 * (t + 12.0), u0 * t}, 0}, {{u1 * t, u1 * (t + 12.0)}, 1}};
+    // The round from face A's tangent point (straight below the centre) over the nose to face
+    // B's, turning by 180 degrees less the opening.
+    pieces.push_back({arc(centre, r, -M_PI / 2.0, M_PI / 2.0 - opening), 2});
+    const Swept s = staggered(pieces, 40.0, nose);
+    const ProfileTyping typed = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    EXPECT_NEAR(typed.profiles[0].angle, 25.0, 2.0);
+    EXPECT_NEAR(typed.profiles[0].radius, r, 0.3);
+    ASSERT_EQ(typed.network.lines.size(), 2u);
+    EXPECT_TRUE(typed.profiles[0].blend);
+    EXPECT_FALSE(typed.profiles[0].narrow);
+}
+
+TEST(ProfileTyping, OtherSheetOfAThinWallIsNoFace)
+{
+    // Under face A, 4 spacings down and tilted 20 degrees away from it, the other sheet of a
+    // tapering wall, sampled densely enough to be the largest cluster within reach: it is no
+    // face of the line (its plane passes 4 spacings off), so the faces are A and B at 90.
+    const double tilt = 20.0 * M_PI / 180.0;
+    std::vector<Piece> pieces = {{{{-12.0, 0.0}, {0.0, 0.0}}, 0}, {{{0.0, 0.0}, {0.0, 9.0}}, 1}};
+    for (double shift : {0.0, 0.5}) {
+        const double y0 = -12.0 + shift;
+        pieces.push_back({{{y0, -4.0 + y0 * std::tan(tilt)}, {0.0, -4.0}}, 3});
+    }
+    const Swept s = staggered(pieces, 40.0, Eigen::Vector2d::Zero());
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 1u);
+    EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
+    EXPECT_EQ(t.network.lines[0].label, sharpLineLabel);
+    // Taken as a face, it would make the wedge 20 degrees.
+    ProfileTypingOptions o;
+    o.maxFaceOffset = 100.0;
+    EXPECT_NEAR(typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0, o).profiles[0].angle, 20.0, 3.0);
 }
 
 TEST(ProfileTyping, OtherLinesAreCopied)
