@@ -395,8 +395,9 @@ ThresholdTests weighThreshold(const AutomaticSearch& s, const Range& range,
 }
 
 /// The ranges searched after decision d on the range (pushed on the depth-first stack).
+/// `strays`: the values above tau are fewer than a patch's worth.
 void queueNextRanges(const Range& range, const ThresholdDecision& d, const ThresholdTests& t,
-                     int maxMisses, std::vector<Range>& ranges)
+                     bool strays, int maxMisses, std::vector<Range>& ranges)
 {
     const double tau = d.applied;
     // Sec. 2.4: the outliers leave the histogram, not the patches.
@@ -411,8 +412,12 @@ void queueNextRanges(const Range& range, const ThresholdDecision& d, const Thres
         // No patch above tau: the valley found lies above the highest patch of the range
         // (e.g. after a fillet peak at the top of the histogram); the patches' own valley
         // is lower down (Sec. 2.3, "lower threshold").
+        // When the values above tau are strays (fewer than a patch's worth, as the fits at a
+        // clean region's edges give them), no level was refused: peeling them off is no miss,
+        // or a few groups of strays above a clean fillet's level would end the search before
+        // it reached the fillet. A scattered tail of more values (noise) is a miss.
         ranges.push_back({range.low, d.result.threshold, range.patchLow, range.patchHigh, false,
-                          range.misses + 1});
+                          range.misses + (strays ? 0 : 1)});
     } else if (!t.levels || !t.patchBelow) {
         // tau splits one curvature level in two (a peak and its own noise tail), or cuts
         // the transition between two levels short of the lower one; a second level, if
@@ -461,7 +466,9 @@ std::vector<ThresholdDecision> automaticThresholds(const RegionGeometry& region,
         const ThresholdTests tests = weighThreshold(search, range, h, d);
         decisions.push_back(d);
         accepted += d.accepted ? 1 : 0;
-        queueNextRanges(range, d, tests, a.maxMisses, ranges);
+        const auto above = std::count_if(values.begin(), values.end(),
+                                         [&](double v) { return v > d.result.threshold; });
+        queueNextRanges(range, d, tests, above < search.minInner, a.maxMisses, ranges);
     }
     return decisions;
 }

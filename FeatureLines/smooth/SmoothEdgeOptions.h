@@ -29,7 +29,8 @@ struct AutomaticThresholdOptions
     int maxThresholds = 3;
     /// Thresholds weighed at most (accepted or not): each costs a labelling of the region.
     int maxSearches = 16;
-    /// Refused thresholds in a row after which a range is given up.
+    /// Refused thresholds in a row after which a range is given up (a valley with no patch
+    /// above it, whose values are strays, is no refusal).
     int maxMisses = 2;
     /// Least valley ratio e(tau) = b1 / b2 (Sec. 2.2).
     double minRatio = 2.0;

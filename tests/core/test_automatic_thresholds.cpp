@@ -54,6 +54,39 @@ TEST(AutomaticThresholds, ValleyAboveTheTopPatchSendsTheSearchBelow)
     EXPECT_LT(taus[0], 0.07);
 }
 
+TEST(AutomaticThresholds, StraysJustAboveAFilletDoNotUseUpTheSearch)
+{
+    // A plane (0) and a strip at 0.1 (a fillet, its sides blurred as in the test above), and
+    // stray values above it as the fits at a clean region's edges give them: 20 spread from
+    // 0.165 to 0.45, three at 0.12, one at 0.108 and one at 0.103. The first valleys found lie
+    // above the strip, one group of strays after another; none holds a patch above it, and each
+    // sends the search below it. Peeling off fewer values than a patch refuses no curvature
+    // level and does not use up the search: it reaches plane | strip.
+    int stray = 0;
+    const RegionGeometry g = latticeRegion(70, 60, [&stray](double x, double y) {
+        if (std::fmod(x * 7.0 + y * 13.0, 101.0) < 1.0 && stray < 25) {
+            ++stray;
+            return stray <= 20   ? 0.15 + 0.015 * stray
+                   : stray <= 23 ? 0.12
+                   : stray == 24 ? 0.108
+                                 : 0.103;
+        }
+        const double wave = 3.0 * std::sin(y / 7.0);
+        return x < 40.0 ? step(x, 25.0 + wave, 0.0, 0.1, 4.0) : step(x, 55.0 + wave, 0.1, 0.0, 4.0);
+    });
+    ASSERT_EQ(stray, 25);
+    const std::vector<ThresholdDecision> d = automaticThresholds(g);
+    ASSERT_GE(d.size(), 4u);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_FALSE(d[i].accepted) << i;
+        EXPECT_GT(d[i].result.threshold, 0.1) << i;
+    }
+    const std::vector<double> taus = accepted(d);
+    ASSERT_EQ(taus.size(), 1u);
+    EXPECT_GT(taus[0], 0.0);
+    EXPECT_LT(taus[0], 0.1);
+}
+
 TEST(AutomaticThresholds, ThreeLevelsGiveTwoThresholds)
 {
     // Plane 0, strip 0.1, and inside the strip a core at 0.2 (fillet and corner levels).
