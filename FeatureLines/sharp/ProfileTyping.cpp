@@ -643,16 +643,16 @@ ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
             }
             profile.significance =
                 summed[best] > 0.0 ? (summed[0] - summed[best]) / (summed[best] / points) : 0.0;
-            if (profile.radius >= options.minNarrowRadius * spacing &&
-                profile.significance >= options.minSignificance) {
+            // A round wide and significant enough is weighed against the best flat cut.
+            const bool significant = profile.radius >= options.minNarrowRadius * spacing &&
+                                     profile.significance >= options.minSignificance;
+            if (significant) {
                 const FlatCut cut = bestFlatCut(stations, valid, last, options);
                 profile.chamferGain = summed[0] > 0.0 ? (summed[0] - cut.cost) / summed[0] : 0.0;
                 profile.setback[0] = cut.setback[0] * spacing;
                 profile.setback[1] = cut.setback[1] * spacing;
             }
-            const bool round = valid.size() >= 3 &&
-                               profile.radius >= options.minNarrowRadius * spacing &&
-                               profile.significance >= options.minSignificance &&
+            const bool round = valid.size() >= 3 && significant &&
                                profile.gain >= options.minShareOfCut * profile.chamferGain;
             profile.blend = options.splitBlends && round;
             profile.narrow = profile.blend && profile.radius < options.minBlendRadius * spacing;
