@@ -21,13 +21,18 @@ struct SheetOptions
     /// views misregistered by up to half a spacing each are one sheet).
     double minGap = 1.0;
     /// The gap is at least this many times the local fit's RMS residual, so that noise across
-    /// one sheet is not read as a second one (4).
-    double noiseGap = 4.0;
+    /// one sheet is not read as a second one (3).
+    double noiseGap = 3.0;
+    /// The offsets along a sheet's direction of a point and its neighbours fall in two groups
+    /// (two sheets) only when the groups' means lie at least this far apart, x the sampling
+    /// spacing (1.25: a wall of 1.5 spacings is split, misregistered merged views of up to a
+    /// spacing are not).
+    double minWall = 1.25;
     /// Two sheets' planes turn by at most this, degrees (25).
     double maxTurnDegrees = 25.0;
     /// A neighbourhood reaches another sheet when at least this many of its points lie across
-    /// the gap, all on one side (2).
-    int minAcross = 2;
+    /// the gap, all on one side (1).
+    int minAcross = 1;
 };
 
 struct NeighbourOptions

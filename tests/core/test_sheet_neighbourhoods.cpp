@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "FeatureLines/Extraction.h"
@@ -25,6 +27,48 @@ shapes::Sample plate(double length, double width, double thickness, unsigned see
 {
     const double a = length / 2.0, b = width / 2.0;
     return shapes::prism({{-a, -b}, {a, -b}, {a, b}, {-a, b}}, thickness, 1.0, seed);
+}
+
+/// Two parallel sheets `width` x `depth` (x, y), `thickness` apart along z, each of
+/// width x depth points at random positions (spacing about 1: a scan's irregular sampling,
+/// clumps and gaps, not a grid whose points lie above one another), moved along z by noise of
+/// standard deviation `sigma`. part: 4 the top sheet, 5 the bottom (as plate's caps), no rim.
+shapes::Sample randomSheets(double width, double depth, double thickness, double sigma,
+                            unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> x(-width / 2.0, width / 2.0);
+    std::uniform_real_distribution<double> y(-depth / 2.0, depth / 2.0);
+    std::normal_distribution<double> noise(0.0, sigma > 0.0 ? sigma : 1.0);
+    const int perSheet = static_cast<int>(width * depth);
+    shapes::Sample s;
+    s.points.resize(2 * perSheet, 3);
+    s.normals.resize(2 * perSheet, 3);
+    for (int i = 0; i < 2 * perSheet; ++i) {
+        const bool top = i < perSheet;
+        const double z = (top ? thickness / 2.0 : -thickness / 2.0) +
+                         (sigma > 0.0 ? noise(rng) : 0.0);
+        s.points.row(i) << x(rng), y(rng), z;
+        s.normals.row(i) << 0.0, 0.0, top ? 1.0 : -1.0;
+        s.part.push_back(top ? 4 : 5);
+    }
+    return s;
+}
+
+/// Length of the lines of `r` farther than `margin` inside the outline of sheets
+/// width x depth: on the faces, where no edge is.
+double lengthOnTheFaces(const ExtractionResult& r, double width, double depth, double margin)
+{
+    double length = 0.0;
+    for (const FeatureLine& line : r.lines) {
+        for (Eigen::Index v = 1; v < line.points.rows(); ++v) {
+            const Eigen::RowVector3d m = 0.5 * (line.points.row(v - 1) + line.points.row(v));
+            if (std::abs(m.x()) < width / 2.0 - margin && std::abs(m.y()) < depth / 2.0 - margin) {
+                length += (line.points.row(v) - line.points.row(v - 1)).norm();
+            }
+        }
+    }
+    return length;
 }
 
 /// Neighbours of top points on the bottom and of bottom points on the top, among the points at
@@ -100,7 +144,9 @@ TEST(SheetNeighbourhoods, CubeCreasesAndNoisyPlaneAreOneSheet)
     shapes::addNormalNoise(plane, 0.5, 9);
     Neighbourhoods M = nearestNeighbours(plane.points);
     const std::vector<int> rows = separateSheets(plane.points, M, samplingSpacing(M));
-    EXPECT_LT(rows.size(), static_cast<size_t>(plane.size() / 200));
+    // Read as two sheets, most rows would be rebuilt. A row is rebuilt where a neighbour lies
+    // three deviations of the noise off the plane (minAcross 1): under 1 in 50 rows.
+    EXPECT_LT(rows.size(), static_cast<size_t>(plane.size() / 50));
 }
 
 TEST(SheetNeighbourhoods, OffKeepsTheNeighbourhoods)
@@ -189,4 +235,39 @@ TEST(SheetNeighbourhoods, TwoSpacingPlateGivesItsOutlineAndNothingOnItsFaces)
     int before = 0;
     EXPECT_GT(verticesOffOutline(extractFeatureLines(s.points, together), a, b, t, 2.5, before),
               before / 4);
+}
+
+// Issue 17, item 2, on a scan's irregular sampling: two random sheets' points do not lie
+// above one another, so a point's nearest few often hold one of the other sheet, which tilts
+// their least-squares plane or, at half, turns it across the wall; the sheet's direction is
+// then read from the neighbours' planes (docs/design/neighbourhoods.md, "Thin walls"). Without
+// that, the three cases kept 83, 31 and 74 % of their crossings.
+TEST(SheetNeighbourhoods, RandomSheetsKeepApartDownToOneAndAHalfSpacings)
+{
+    struct Case
+    {
+        double thickness, sigma;
+        unsigned seed;
+    };
+    for (const Case c : {Case{1.5, 0.0, 11}, Case{2.0, 0.1, 12}, Case{3.0, 0.3, 13}}) {
+        const shapes::Sample s = randomSheets(40.0, 30.0, c.thickness, c.sigma, c.seed);
+        Neighbourhoods N = nearestNeighbours(s.points);
+        const int before = neighboursAcross(s, N, 3.0);
+        ASSERT_GT(before, 200) << "thickness " << c.thickness;
+        separateSheets(s.points, N, samplingSpacing(N));
+        EXPECT_LT(neighboursAcross(s, N, 3.0), before / 20)
+            << "thickness " << c.thickness << ", noise " << c.sigma << ", before " << before;
+    }
+}
+
+// End to end, the faces of noisy random sheets 3 spacings apart (noise 0.3 spacing) and clean
+// ones 2 spacings apart hold no line (without the plane read again: 124 and 77 spacings of it).
+TEST(SheetNeighbourhoods, RandomSheetsHoldNoLineOnTheirFaces)
+{
+    for (const auto& [thickness, sigma] : {std::pair{3.0, 0.3}, std::pair{2.0, 0.0}}) {
+        const shapes::Sample s = randomSheets(40.0, 30.0, thickness, sigma, 21);
+        const ExtractionResult r = extractFeatureLines(s.points);
+        EXPECT_EQ(lengthOnTheFaces(r, 40.0, 30.0, 4.0), 0.0)
+            << "thickness " << thickness << ", noise " << sigma;
+    }
 }
