@@ -250,6 +250,26 @@ LocalPlane votedPlane(const PointMatrix& P, const Neighbourhoods& N, Eigen::Inde
     return plane;
 }
 
+/// Per point i, the lower quartile of value(j) over i and its m < maxFitted nearest.
+template <typename Value>
+std::vector<double> lowerQuartileNear(const Neighbourhoods& N, int m, int workers, Value value)
+{
+    const Eigen::Index n = N.size();
+    std::vector<double> result(static_cast<size_t>(n));
+#pragma omp parallel for num_threads(workers) schedule(static, 1024)
+    for (Eigen::Index i = 0; i < n; ++i) {
+        double near[maxFitted];
+        int count = 0;
+        near[count++] = value(i);
+        for (int j = 0; j < m; ++j) {
+            near[count++] = value(N.indices(i, j));
+        }
+        std::nth_element(near, near + count / 4, near + count);
+        result[static_cast<size_t>(i)] = near[count / 4];
+    }
+    return result;
+}
+
 } // namespace
 
 std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double spacing,
@@ -285,18 +305,8 @@ std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double 
         const std::vector<LocalPlane> first = planes;
         // The quiet residual about each point: the lower quartile of the first residuals of it
         // and its nearest (a fit the other sheet reached reads too much).
-        std::vector<double> quiet(static_cast<size_t>(n));
-#pragma omp parallel for num_threads(workers) schedule(static, 1024)
-        for (Eigen::Index i = 0; i < n; ++i) {
-            double near[maxFitted];
-            int count = 0;
-            near[count++] = first[static_cast<size_t>(i)].rms;
-            for (int j = 0; j < m; ++j) {
-                near[count++] = first[static_cast<size_t>(N.indices(i, j))].rms;
-            }
-            std::nth_element(near, near + count / 4, near + count);
-            quiet[static_cast<size_t>(i)] = near[count / 4];
-        }
+        const std::vector<double> quiet = lowerQuartileNear(
+            N, m, workers, [&](Eigen::Index j) { return first[static_cast<size_t>(j)].rms; });
 #pragma omp parallel for num_threads(workers) schedule(static, 1024)
         for (Eigen::Index i = 0; i < n; ++i) {
             planes[static_cast<size_t>(i)] =
@@ -309,18 +319,8 @@ std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double 
     // that a thin wall's other sheet still reached reads too much noise; the others are its
     // own sheet's).
     {
-        std::vector<double> gaps(static_cast<size_t>(n));
-#pragma omp parallel for num_threads(workers) schedule(static, 1024)
-        for (Eigen::Index i = 0; i < n; ++i) {
-            double near[maxFitted]; // the point and its m < maxFitted nearest
-            int count = 0;
-            near[count++] = planes[static_cast<size_t>(i)].gap;
-            for (int j = 0; j < m; ++j) {
-                near[count++] = planes[static_cast<size_t>(N.indices(i, j))].gap;
-            }
-            std::nth_element(near, near + count / 4, near + count);
-            gaps[static_cast<size_t>(i)] = near[count / 4];
-        }
+        const std::vector<double> gaps = lowerQuartileNear(
+            N, m, workers, [&](Eigen::Index j) { return planes[static_cast<size_t>(j)].gap; });
         for (Eigen::Index i = 0; i < n; ++i) {
             planes[static_cast<size_t>(i)].gap = gaps[static_cast<size_t>(i)];
         }
