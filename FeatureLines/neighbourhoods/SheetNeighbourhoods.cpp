@@ -246,7 +246,6 @@ LocalPlane votedPlane(const PointMatrix& P, const Neighbourhoods& N, Eigen::Inde
     const double rms = std::sqrt(scatter(from, to) / double(std::max(1, kept - 3)));
     plane.gap = std::max(minGap, noiseGap * rms);
     plane.offset = plane.normal.dot(origin) + centre;
-    plane.defined = true;
     return plane;
 }
 
@@ -296,13 +295,13 @@ std::vector<int> separateSheets(const PointMatrix& P, Neighbourhoods& N, double 
     const int m = std::min({options.fitPoints, k, maxFitted - 1});
     const int workers = threadCount(threads);
     std::vector<LocalPlane> planes(static_cast<size_t>(n));
-#pragma omp parallel for num_threads(workers) schedule(static, 1024)
-    for (Eigen::Index i = 0; i < n; ++i) {
-        planes[static_cast<size_t>(i)] =
-            localPlane(P, N, i, m, options.minGap * spacing, options.noiseGap);
-    }
     {
-        const std::vector<LocalPlane> first = planes;
+        std::vector<LocalPlane> first(static_cast<size_t>(n));
+#pragma omp parallel for num_threads(workers) schedule(static, 1024)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            first[static_cast<size_t>(i)] =
+                localPlane(P, N, i, m, options.minGap * spacing, options.noiseGap);
+        }
         // The quiet residual about each point: the lower quartile of the first residuals of it
         // and its nearest (a fit the other sheet reached reads too much).
         const std::vector<double> quiet = lowerQuartileNear(
