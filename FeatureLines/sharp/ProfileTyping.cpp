@@ -362,6 +362,31 @@ int bestRadius(const std::vector<Station>& stations, const std::vector<int>& whi
     return best;
 }
 
+/// The blend of radius index `best`'s mean squared residual per point (each term capped at
+/// residualLimit^2) over the profile points of the stations `which` that lie within the tangent
+/// length plus `window` (spacings) of their apex: near the arc, where the blend and the crease
+/// differ. NaN when no point lies there.
+double residualNearArc(const std::vector<Station>& stations, const std::vector<int>& which,
+                       int best, double window, double residualLimit)
+{
+    const double r = best * radiusStep;
+    const double limit2 = residualLimit * residualLimit;
+    double sum = 0.0;
+    int count = 0;
+    for (int s : which) {
+        const ProfileModel model(stations[s].opening);
+        const double reach = model.tangentLength(r) + window;
+        for (const Eigen::Vector2d& q : stations[s].profile) {
+            if (q.norm() <= reach) {
+                const double d = model.distance(q, r);
+                sum += std::min(d * d, limit2);
+                ++count;
+            }
+        }
+    }
+    return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
+}
+
 /// Side directions that follow the line: at every valid station after the first, the sides are
 /// swapped when that matches the previous valid station better.
 void alignSides(std::vector<Station>& stations)
@@ -641,8 +666,18 @@ ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
             for (int v : valid) {
                 points += static_cast<int>(stations[v].profile.size());
             }
-            profile.significance =
-                summed[best] > 0.0 ? (summed[0] - summed[best]) / (summed[best] / points) : 0.0;
+            // The unit: the blend's mean squared residual per point, over the whole profile or
+            // near the arc when smaller (faces that are not planes leave a residual far out).
+            double unit = summed[best] / points;
+            if (best > 0 && options.significanceWindow > 0.0) {
+                const double nearArc = residualNearArc(stations, valid, best,
+                                                       options.significanceWindow,
+                                                       options.residualLimit);
+                if (nearArc > 0.0 && nearArc < unit) {
+                    unit = nearArc;
+                }
+            }
+            profile.significance = unit > 0.0 ? (summed[0] - summed[best]) / unit : 0.0;
             // A round wide and significant enough is weighed against the best flat cut.
             const bool significant = profile.radius >= options.minNarrowRadius * spacing &&
                                      profile.significance >= options.minSignificance;

@@ -35,8 +35,14 @@ struct ProfileTypingOptions
     double minNarrowRadius = 0.6;
     /// ... the blend lowers the crease model's squared residual by at least this many times the
     /// blend's own mean squared residual per point (a likelihood ratio: noise alone lowers it by
-    /// about one) (30) ...
+    /// about one) (30), that residual read over the whole profile or, when smaller, over its
+    /// points within significanceWindow of the arc ...
     double minSignificance = 30.0;
+    /// Spacings: ... the points no farther than the tangent length plus this (1) from the apex,
+    /// where the blend and the crease differ. Far out, what neither model is meant to explain
+    /// (the far foot of a thin wall, a face that curves) leaves a residual that says nothing of
+    /// the corner. 0: the whole profile only.
+    double significanceWindow = 1.0;
     /// ... and the blend explains at least this share of what the best flat cut across the
     /// corner explains (0.9): a cut that fits far better is a chamfer or a narrow third face.
     double minShareOfCut = 0.9;
@@ -75,7 +81,8 @@ struct LineProfile
     /// Share of the crease model's squared residual the blend explains (0 .. 1).
     double gain = std::numeric_limits<double>::quiet_NaN();
     /// How far the blend lowers the crease model's squared residual, in units of the blend's
-    /// mean squared residual per point.
+    /// mean squared residual per point (over the profile, or near the arc when smaller:
+    /// ProfileTypingOptions::significanceWindow).
     double significance = std::numeric_limits<double>::quiet_NaN();
     /// Share of the crease model's squared residual the best flat cut (a chamfer, or a narrow
     /// third face) explains, and the cut's setbacks from the apex along the two faces.

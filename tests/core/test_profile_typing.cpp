@@ -3,7 +3,8 @@
 // radius r: the round's sharp line becomes its two tangent lines, r is estimated, the crease
 // stays one sharp line whose angle is 90 degrees; a narrow third face on one side is no blend;
 // a round under 1.2 spacings is one smooth line; the rounded nose of an acute wedge gives its
-// borders; the other sheet of a thin wall is no face.
+// borders; a round at the foot of a thin wall, whose far foot crowds the profile, still gives
+// its borders; the other sheet of a thin wall is no face.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -345,6 +346,48 @@ TEST(ProfileTyping, RoundedNoseOfAnAcuteWedgeGivesItsTwoBorders)
     ASSERT_EQ(typed.network.lines.size(), 2u);
     EXPECT_TRUE(typed.profiles[0].blend);
     EXPECT_FALSE(typed.profiles[0].narrow);
+}
+
+TEST(ProfileTyping, RoundAtTheFootOfAThinWallGivesItsTwoBorders)
+{
+    // A wall 3 spacings thick standing on a plate, both feet rounded with radius 2 (a blade on
+    // the disc of a fan wheel). The line runs along the near foot. Within the reach
+    // lie the far foot's round (candidates too) and the plate beyond it (the near plate's
+    // cluster): points neither the crease nor the round explains, whose capped residual,
+    // used as the unit of significance, would hide the round. Near the arc the round fits to
+    // the sampling.
+    const double r = 2.0;
+    const double wall = 3.0;
+    const std::vector<Piece> pieces = {
+        {{{-12.0, 0.0}, {-r, 0.0}}, 0},
+        {arc({-r, r}, r, -M_PI / 2.0, 0.0), 2},
+        {{{0.0, r}, {0.0, 12.0}}, 1},
+        {{{wall, r}, {wall, 12.0}}, 3},
+        {arc({wall + r, r}, r, M_PI, 1.5 * M_PI), 2},
+        {{{wall + r, 0.0}, {12.0, 0.0}}, 0}};
+    const Swept s = staggered(pieces, 40.0, Eigen::Vector2d::Zero());
+    ProfileTypingOptions whole;
+    whole.significanceWindow = 0.0;
+    const ProfileTyping u = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0, whole);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    // The residual of the whole profile as the unit: the round is not significant.
+    EXPECT_FALSE(u.profiles[0].blend);
+    EXPECT_GT(t.profiles[0].significance, 10.0 * u.profiles[0].significance);
+    ASSERT_EQ(t.network.lines.size(), 2u);
+    EXPECT_TRUE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].radius, r, 0.3);
+    EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
+    // The round's borders: one on the plate at y = -r, the other on the wall at z = r.
+    int onA = 0;
+    int onB = 0;
+    for (const Polyline& border : t.network.lines) {
+        EXPECT_EQ(border.label, blendBorderLabel);
+        const Eigen::RowVector3d p = border.points.row(border.points.rows() / 2);
+        onA += offLine(p, -r, 0.0) < 0.25 ? 1 : 0;
+        onB += offLine(p, 0.0, r) < 0.25 ? 1 : 0;
+    }
+    EXPECT_EQ(onA, 1);
+    EXPECT_EQ(onB, 1);
 }
 
 TEST(ProfileTyping, OtherSheetOfAThinWallIsNoFace)
