@@ -46,6 +46,9 @@ struct Station
     std::vector<Eigen::Vector2d> profile;
     /// The sides were swapped to follow the line (side[0] is then the x axis's mirror).
     bool swapped = false;
+    /// A face's plane passes near the vertex (the first face was found; the station may still
+    /// lack a second).
+    bool faced = false;
 };
 
 /// The profile model: two rays from the origin, along x and at `opening` from it, joined by
@@ -283,6 +286,7 @@ Station StationFitter::fit(const Eigen::Vector3d& centre, const Eigen::Vector3d&
             break;
         }
     }
+    station.faced = face[0] >= 0;
     if (face[1] < 0) {
         return station;
     }
@@ -586,6 +590,59 @@ std::vector<Polyline> blendBorders(const Polyline& line, const std::vector<Stati
     return borders;
 }
 
+/// The sharp lines to drop: those whose vertices see a face at fewer than `minShare` of them
+/// (`faced`: per line of `network`, its vertices that do), then, again and again, the open
+/// sharp lines shorter than `spur` with an end on a junction that a dropped line touches and
+/// no other kept line does.
+std::vector<char> linesWithoutFaces(const LineNetwork& network, const std::vector<int>& faced,
+                                    double minShare, double spur)
+{
+    const size_t n = network.lines.size();
+    std::vector<char> dropped(n, 0);
+    for (size_t l = 0; l < n; ++l) {
+        const Polyline& line = network.lines[l];
+        dropped[l] = line.label == sharpLineLabel &&
+                     faced[l] < minShare * static_cast<double>(line.points.rows());
+    }
+    // Per junction: the lines that end on it (a line with both ends on it twice).
+    std::vector<std::vector<size_t>> touching(static_cast<size_t>(network.junctions.rows()));
+    for (size_t l = 0; l < n; ++l) {
+        for (int j : {network.lines[l].startJunction, network.lines[l].endJunction}) {
+            if (j >= 0 && j < static_cast<int>(touching.size())) {
+                touching[static_cast<size_t>(j)].push_back(l);
+            }
+        }
+    }
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (size_t l = 0; l < n; ++l) {
+            const Polyline& line = network.lines[l];
+            if (dropped[l] || line.label != sharpLineLabel || line.closed ||
+                line.points.rows() < 2 || arcLengths(line.points).back() >= spur) {
+                continue;
+            }
+            for (int j : {line.startJunction, line.endJunction}) {
+                if (j < 0 || j >= static_cast<int>(touching.size())) {
+                    continue;
+                }
+                bool onDropped = false;
+                bool onKept = false;
+                for (size_t o : touching[static_cast<size_t>(j)]) {
+                    if (o != l) {
+                        (dropped[o] ? onDropped : onKept) = true;
+                    }
+                }
+                if (onDropped && !onKept) {
+                    dropped[l] = 1;
+                    changed = true;
+                    break;
+                }
+            }
+        }
+    }
+    return dropped;
+}
+
 } // namespace
 
 ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
@@ -617,10 +674,26 @@ ProfileTyping typeByProfile(const PointMatrix& P, const NormalMatrix& normals,
                             lineDirection(line, where[s].second));
     }
 
+    // Sharp lines over a surface with no face in reach.
+    std::vector<char> dropped(network.lines.size(), 0);
+    if (options.minFaceShare > 0.0) {
+        std::vector<int> faced(network.lines.size(), 0);
+        for (size_t s = 0; s < where.size(); ++s) {
+            faced[where[s].first] += all[s].faced ? 1 : 0;
+        }
+        dropped = linesWithoutFaces(network, faced, options.minFaceShare,
+                                    options.maxSpurLength * spacing);
+    }
+
     size_t next = 0;
-    for (const Polyline& line : network.lines) {
+    for (size_t l = 0; l < network.lines.size(); ++l) {
+        const Polyline& line = network.lines[l];
         LineProfile profile;
         int last = 0;
+        if (dropped[l]) {
+            next += line.label == sharpLineLabel ? static_cast<size_t>(line.points.rows()) : 0;
+            continue;
+        }
         if (line.label != sharpLineLabel) {
             result.network.lines.push_back(line);
             result.profiles.push_back(profile);

@@ -64,6 +64,17 @@ struct ProfileTypingOptions
     /// Spacings: the radius is estimated per vertex over the stations within this arc length
     /// (a fillet's radius may vary along it) (8).
     double radiusWindow = 8.0;
+    /// A sharp line is dropped when fewer than this share of its vertices (0.25) see a face:
+    /// a large cluster whose plane passes within maxFaceOffset of the vertex. A crease lies on
+    /// its faces; a line with none within reach runs over a surface the segmentation broke
+    /// into candidates everywhere (a rod or a bore of a few spacings' radius, curved faster
+    /// than the growing follows). 0: no line is dropped.
+    double minFaceShare = 0.25;
+    /// Spacings: open sharp lines shorter than this (21, three reaches) left hanging on a
+    /// dropped line's end (and on no other line's) go with it, again and again: the pieces of
+    /// the broken surface's net that reach a face. Longer ones stay, so that a true edge that
+    /// ran into the broken surface is not lost.
+    double maxSpurLength = 21.0;
     /// Worker threads; 0: OpenMP's default (0).
     int threads = 0;
 };
@@ -99,7 +110,7 @@ struct ProfileTyping
 {
     /// The network with every blend's sharp line replaced by its two borders (label
     /// blendBorderLabel), which end where the sharp line ended, or a narrow blend's by one
-    /// line of that label in its place.
+    /// line of that label in its place, and without the lines no face is near.
     LineNetwork network;
     /// Per line of `network`: its profile; a border carries the profile of its blend.
     std::vector<LineProfile> profiles;
@@ -112,8 +123,10 @@ struct ProfileTyping
 /// near the plane across the line then fit either the two planes meeting in a crease or the same
 /// planes joined by a circular blend tangent to both, of the radius that fits best over the line. A
 /// line whose radius and gain pass the options' limits is replaced by the blend's two tangent
-/// lines, or, under minBlendRadius, relabelled as one blend line. Other lines are copied;
-/// every line gets its profile.
+/// lines, or, under minBlendRadius, relabelled as one blend line. A sharp line that sees a
+/// face at under minFaceShare of its vertices is dropped, with the short lines left hanging on
+/// it (maxSpurLength); the junctions stay as they were. Other lines are copied; every line
+/// gets its profile.
 ///   P        #P by 3 points
 ///   normals  #P by 3 unit normals (unoriented), or empty: then a face is one cluster
 ///   seg      the sharp stage's segmentation (its large clusters are the faces)
