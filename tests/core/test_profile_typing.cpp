@@ -161,18 +161,11 @@ double offLine(const Eigen::RowVector3d& p, double y0, double z0)
     return std::hypot(p(1) - y0, p(2) - z0);
 }
 
-TEST(ProfileTyping, RoundOfThreeSpacingsBecomesItsTwoTangentLines)
+/// `t`'s lines are two blend borders along x, one on face A at y = -r, the other on face B at
+/// z = r, each within a quarter spacing over x in [8, 32] (away from the ends, where the
+/// borders run to the sharp line's end points).
+void expectBordersOnTheFaces(const ProfileTyping& t, double r)
 {
-    const double r = 3.0;
-    const Swept s = roundedL(r, 40.0);
-    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
-    ASSERT_EQ(t.network.lines.size(), 2u);
-    ASSERT_EQ(t.profiles.size(), 2u);
-    EXPECT_TRUE(t.profiles[0].blend);
-    EXPECT_NEAR(t.profiles[0].radius, r, 0.3);
-    EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
-    // One border on face A at y = -r, the other on face B at z = r (away from the ends, where
-    // the borders run to the sharp line's end points).
     int onA = 0;
     int onB = 0;
     for (const Polyline& border : t.network.lines) {
@@ -195,6 +188,19 @@ TEST(ProfileTyping, RoundOfThreeSpacingsBecomesItsTwoTangentLines)
     }
     EXPECT_EQ(onA, 1);
     EXPECT_EQ(onB, 1);
+}
+
+TEST(ProfileTyping, RoundOfThreeSpacingsBecomesItsTwoTangentLines)
+{
+    const double r = 3.0;
+    const Swept s = roundedL(r, 40.0);
+    const ProfileTyping t = typeByProfile(s.P, {}, s.seg, {}, s.network, 1.0);
+    ASSERT_EQ(t.network.lines.size(), 2u);
+    ASSERT_EQ(t.profiles.size(), 2u);
+    EXPECT_TRUE(t.profiles[0].blend);
+    EXPECT_NEAR(t.profiles[0].radius, r, 0.3);
+    EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
+    expectBordersOnTheFaces(t, r);
 }
 
 TEST(ProfileTyping, RoundOfTwoSpacingsIsStillTwoBorders)
@@ -383,16 +389,7 @@ TEST(ProfileTyping, RoundAtTheFootOfAThinWallGivesItsTwoBorders)
     EXPECT_NEAR(t.profiles[0].radius, r, 0.3);
     EXPECT_NEAR(t.profiles[0].angle, 90.0, 2.0);
     // The round's borders: one on the plate at y = -r, the other on the wall at z = r.
-    int onA = 0;
-    int onB = 0;
-    for (const Polyline& border : t.network.lines) {
-        EXPECT_EQ(border.label, blendBorderLabel);
-        const Eigen::RowVector3d p = border.points.row(border.points.rows() / 2);
-        onA += offLine(p, -r, 0.0) < 0.25 ? 1 : 0;
-        onB += offLine(p, 0.0, r) < 0.25 ? 1 : 0;
-    }
-    EXPECT_EQ(onA, 1);
-    EXPECT_EQ(onB, 1);
+    expectBordersOnTheFaces(t, r);
 }
 
 TEST(ProfileTyping, OtherSheetOfAThinWallIsNoFace)
