@@ -599,10 +599,14 @@ std::vector<char> linesWithoutFaces(const LineNetwork& network, const std::vecto
 {
     const size_t n = network.lines.size();
     std::vector<char> dropped(n, 0);
+    // Open sharp lines short enough to go with a dropped line they hang on.
+    std::vector<char> spurLike(n, 0);
     for (size_t l = 0; l < n; ++l) {
         const Polyline& line = network.lines[l];
-        dropped[l] = line.label == sharpLineLabel &&
-                     faced[l] < minShare * static_cast<double>(line.points.rows());
+        const bool sharp = line.label == sharpLineLabel;
+        dropped[l] = sharp && faced[l] < minShare * static_cast<double>(line.points.rows());
+        spurLike[l] = sharp && !line.closed && line.points.rows() >= 2 &&
+                      arcLengths(line.points).back() < spur;
     }
     // Per junction: the lines that end on it (a line with both ends on it twice).
     std::vector<std::vector<size_t>> touching(static_cast<size_t>(network.junctions.rows()));
@@ -617,8 +621,7 @@ std::vector<char> linesWithoutFaces(const LineNetwork& network, const std::vecto
         changed = false;
         for (size_t l = 0; l < n; ++l) {
             const Polyline& line = network.lines[l];
-            if (dropped[l] || line.label != sharpLineLabel || line.closed ||
-                line.points.rows() < 2 || arcLengths(line.points).back() >= spur) {
+            if (dropped[l] || !spurLike[l]) {
                 continue;
             }
             for (int j : {line.startJunction, line.endJunction}) {
