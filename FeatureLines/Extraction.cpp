@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
 #include "FeatureLines/smooth/BlendRadius.h"
+#include "FeatureLines/smooth/PointValues.h"
 #include "FeatureLines/smooth/RegionNeighbourhoods.h"
 #include "FeatureLines/smooth/SmoothEdgeLevel.h"
 #include "FeatureLines/support/DisjointSets.h"
@@ -448,6 +450,31 @@ struct RegionEdges
     int nextPatch = 0;
 };
 
+/// The level beneath thresholds[item] in region g, from which a line of that threshold must
+/// rise (SmoothEdgeOptions::minRelativeContrast): 0, a plane's curvature, beneath the region's
+/// lowest threshold; beneath a higher one, the median curvature of the region's points between
+/// the next lower threshold and it (a fillet's own level under a corner blend's).
+double levelBelow(const RegionGeometry& g, const std::vector<double>& thresholds, int item)
+{
+    const double tau = thresholds[static_cast<size_t>(item)];
+    double lower = -1.0;
+    for (double t : thresholds) {
+        if (t < tau) {
+            lower = std::max(lower, t);
+        }
+    }
+    if (lower < 0.0) {
+        return 0.0;
+    }
+    std::vector<double> level;
+    for (Eigen::Index i = 0; i < g.curvature.size(); ++i) {
+        if (g.curvature[i] <= tau && g.curvature[i] > lower) {
+            level.push_back(g.curvature[i]);
+        }
+    }
+    return level.empty() ? lower : detail::median(std::move(level));
+}
+
 /// The smooth edges of region g at each threshold and its patches, numbered from firstPatch.
 /// The levels and the patches are independent of each other: each level runs on a thread of
 /// its own (most of its work walks the 1-rings one point after another). The patches run
@@ -475,7 +502,8 @@ RegionEdges smoothEdgesAndPatches(const RegionGeometry& g, const std::vector<dou
                 // Sec. 1.2: smooth edges end on the sharp edges and the boundary around the
                 // region.
                 edges.levels[item] = smoothEdgesAtThreshold(g, thresholds[item], options.smooth, {},
-                                                            sharp.network.lines);
+                                                            sharp.network.lines,
+                                                            levelBelow(g, thresholds, item));
             } else {
                 nextPatch = labelPatches(g, thresholds, firstPatch, edges.patchOf);
             }

@@ -24,7 +24,7 @@ SmoothEdgeLevel refineInCluster(const RegionGeometry& region, const SmoothEdgeLe
         }
     }
     const ThresholdResult t = regionThreshold(region, options, subset);
-    return smoothEdgesAtThreshold(region, t.threshold, options, subset);
+    return smoothEdgesAtThreshold(region, t.threshold, options, subset, {}, level.threshold);
 }
 
 } // namespace featurelines

@@ -160,6 +160,9 @@ void requireLevelOptions(double threshold, const SmoothEdgeOptions& options)
     if (!std::isfinite(threshold)) {
         throw std::invalid_argument("the curvature threshold must be a finite number");
     }
+    if (!(options.minRelativeContrast >= 0.0)) {
+        throw std::invalid_argument("the least relative line contrast must not be negative");
+    }
     if (options.maxCandidateClusterSize < 1) {
         throw std::invalid_argument("the largest candidate cluster must hold at least one point");
     }
@@ -227,12 +230,18 @@ std::vector<std::vector<int>> pointsOfLines(const ClusterGraph& graph, size_t li
 /// A line must part two levels where it runs: across it, within two fit radii, the curvature
 /// on its high side must exceed that on its low side by minLineContrast noise floors (the
 /// median over the line's candidate points). The edge of a noise island, or a drifting
-/// curvature crossing tau, has about one floor across it. Drops the lines that do not.
+/// curvature crossing tau, has about one floor across it. The contrast must also reach
+/// minRelativeContrast of the step from the level beneath (`below`) to tau: a fillet's border
+/// parts that level from the fillet's, beyond tau, where a curvature drifting through tau along
+/// a freeform surface shows a fraction of it within two fit radii, at any noise. Drops the
+/// lines that do not.
 void dropLinesWithoutContrast(const RegionGeometry& region, const ClusterGraph& graph,
                               const Eigen::VectorXd& curvature, const SmoothEdgeOptions& options,
-                              SmoothEdgeLevel& level)
+                              double below, SmoothEdgeLevel& level)
 {
-    if (!(options.minLineContrast > 0.0 && region.curvatureNoise > 0.0)) {
+    const bool floors = options.minLineContrast > 0.0 && region.curvatureNoise > 0.0;
+    const double relative = options.minRelativeContrast;
+    if (!floors && !(relative > 0.0)) {
         return;
     }
     const std::vector<std::vector<int>> linePoints =
@@ -240,7 +249,8 @@ void dropLinesWithoutContrast(const RegionGeometry& region, const ClusterGraph& 
     std::vector<char> weak(level.network.lines.size(), 0);
     for (size_t l = 0; l < graph.lineNodes.size() && l < weak.size(); ++l) {
         const double contrast = lineContrast(region, curvature, level.threshold, linePoints[l]);
-        weak[l] = contrast < options.minLineContrast * region.curvatureNoise;
+        weak[l] = (floors && contrast < options.minLineContrast * region.curvatureNoise) ||
+                  contrast < relative * (level.threshold - below);
     }
     level.counts.droppedComponents += static_cast<int>(std::count(weak.begin(), weak.end(), 1));
     std::vector<char> anchored; // none yet: the ends are anchored after
@@ -271,9 +281,12 @@ void finishLines(const RegionGeometry& region, const std::vector<Polyline>& anch
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options,
                                        const std::vector<int>& subset,
-                                       const std::vector<Polyline>& anchors)
+                                       const std::vector<Polyline>& anchors, double below)
 {
     requireLevelOptions(threshold, options);
+    if (!std::isfinite(below)) {
+        throw std::invalid_argument("the curvature level beneath the threshold must be a finite number");
+    }
     const std::vector<int> points = subset.empty() ? allIndices(region.points.rows()) : subset;
     SmoothEdgeLevel level;
     level.threshold = threshold;
@@ -291,7 +304,7 @@ SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double thre
         graphOptions);
     level.network = graph.network;
     level.counts = graph.counts;
-    dropLinesWithoutContrast(region, graph, curvature, options, level);
+    dropLinesWithoutContrast(region, graph, curvature, options, below, level);
     finishLines(region, anchors, options, level);
     return level;
 }

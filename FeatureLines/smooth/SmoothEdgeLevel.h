@@ -39,13 +39,16 @@ inline ClusterGraphOptions smoothGraphOptions(const SmoothEdgeOptions& options)
 /// Sec. 3 at threshold tau over the whole region, or over `subset` (region point indices)
 /// only, as the multi-step refinement does. Noise islands are levelled before the labels
 /// (SmoothEdgeOptions::islandMargin); lines without contrast across them are dropped
-/// (minLineContrast); free line ends are anchored on the `anchors` (the sharp and boundary
-/// lines around the region, see anchorLineEnds); short spurs and open pieces shorter than
+/// (minLineContrast, and minRelativeContrast of tau - `below`, where `below` is the threshold
+/// of the level beneath: the region's next lower threshold, 0 for its lowest); free line ends
+/// are anchored on the `anchors` (the sharp and boundary lines around the region, see
+/// anchorLineEnds); short spurs and open pieces shorter than
 /// options.graph.minOpenComponentLength with an end on nothing are then dropped.
 SmoothEdgeLevel smoothEdgesAtThreshold(const RegionGeometry& region, double threshold,
                                        const SmoothEdgeOptions& options = {},
                                        const std::vector<int>& subset = {},
-                                       const std::vector<Polyline>& anchors = {});
+                                       const std::vector<Polyline>& anchors = {},
+                                       double below = 0.0);
 
 /// The contrast across a line at threshold tau (1 / length unit; minLineContrast): the median
 /// over the line's `points` (region point indices) of the local contrast, the median curvature

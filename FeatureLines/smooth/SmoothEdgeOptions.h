@@ -85,6 +85,12 @@ struct SmoothEdgeOptions
     double islandMargin = 1.5;
     /// Curvature noise floors: least contrast across a line (lineContrast); weaker lines go.
     double minLineContrast = 2.0;
+    /// Least contrast across a line (lineContrast), as a share of the step from the level
+    /// beneath to tau (smoothEdgesAtThreshold's `below`; 0 beneath a region's lowest threshold).
+    /// A fillet's border parts that level from the fillet's, above tau: its contrast is about
+    /// the step or more. A curvature that only drifts through tau, as along a freeform surface,
+    /// leaves a fraction of it however clean the cloud. 0: no such test (0.5).
+    double minRelativeContrast = 0.5;
     /// Points: the "small clusters" of Sec. 3, the graph's candidates.
     int maxCandidateClusterSize = 1;
     /// The graph of Sec. 3 (see smoothGraphOptions(): open pieces are dropped after anchoring).

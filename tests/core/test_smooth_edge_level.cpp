@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "FeatureLines/curvature/CurvatureScale.h"
@@ -118,4 +119,61 @@ TEST(SmoothEdgeLevel, TheGraphLeavesOpenPiecesToTheAnchoredLines)
     EXPECT_EQ(graph.minOpenComponentLength, 0.0);
     EXPECT_EQ(graph.maxBubbleLength, 7.0);
     EXPECT_EQ(options.graph.minOpenComponentLength, 12.0);
+}
+
+namespace {
+
+/// Total length of the lines of a level.
+double linesLength(const SmoothEdgeLevel& level)
+{
+    double length = 0.0;
+    for (const Polyline& line : level.network.lines) {
+        for (Eigen::Index i = 1; i < line.points.rows(); ++i) {
+            length += (line.points.row(i) - line.points.row(i - 1)).norm();
+        }
+    }
+    return length;
+}
+
+} // namespace
+
+TEST(SmoothEdgeLevel, ACurvatureThatOnlyDriftsThroughTauHasNoLine)
+{
+    // Along a freeform surface the curvature drifts: here it rises evenly from 0 to 0.16 across
+    // 80 spacings, with no step anywhere. tau = 0.08 crosses it at x = 40, with about 0.008 of
+    // contrast within two fit radii, a tenth of tau: no fillet borders there.
+    const RegionGeometry drift = latticeRegion(80, 60, [](double x, double) { return 0.002 * x; });
+    EXPECT_TRUE(smoothEdgesAtThreshold(drift, 0.08).network.lines.empty());
+    SmoothEdgeOptions noRelative;
+    noRelative.minRelativeContrast = 0.0;
+    EXPECT_GT(linesLength(smoothEdgesAtThreshold(drift, 0.08, noRelative)), 40.0)
+        << "without the relative contrast the drift is parted along x = 40";
+
+    // A fillet's border: the same levels 0 and 0.16 in one step, blurred over 3 spacings as
+    // the quadric fit blurs it. Its line stays, along the whole region (about 52 spacings).
+    const RegionGeometry fillet =
+        latticeRegion(80, 60, [](double x, double) { return step(x, 40.0, 0.0, 0.16, 3.0); });
+    const SmoothEdgeLevel border = smoothEdgesAtThreshold(fillet, 0.08);
+    EXPECT_GT(linesLength(border), 40.0);
+    for (const Polyline& line : border.network.lines) {
+        for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+            EXPECT_NEAR(line.points(i, 0), 40.0, 1.5);
+        }
+    }
+}
+
+TEST(SmoothEdgeLevel, AHigherLevelsLineRisesFromTheLevelBeneath)
+{
+    // A corner blend (0.16) beside a fillet (0.1), on a region whose lowest threshold parts the
+    // fillet from its faces: the blend's border at tau = 0.13 rises 0.06 from the fillet's
+    // level, less than half of tau but all of the step from the level beneath.
+    const RegionGeometry g =
+        latticeRegion(80, 60, [](double x, double) { return step(x, 40.0, 0.1, 0.16, 3.0); });
+    EXPECT_GT(linesLength(smoothEdgesAtThreshold(g, 0.13, {}, {}, {}, 0.1)), 40.0);
+    EXPECT_TRUE(smoothEdgesAtThreshold(g, 0.13).network.lines.empty())
+        << "measured from a plane's level, the step is too small a share of tau";
+    SmoothEdgeOptions negative;
+    negative.minRelativeContrast = -1.0;
+    EXPECT_THROW(smoothEdgesAtThreshold(g, 0.13, negative), std::invalid_argument);
+    EXPECT_THROW(smoothEdgesAtThreshold(g, 0.13, {}, {}, {}, std::nan("")), std::invalid_argument);
 }
