@@ -95,6 +95,12 @@ FEATURELINES_PARAMETER(
     "Where a region's curvature was read at a coarser scale, move its smooth lines onto the "
     "curvature step of the points under them (a fit of the surface's profile across each "
     "line): the coarse scale alone leaves them a few point spacings off the fillet border.")
+FEATURELINES_PARAMETER(
+    PlaceOwnScaleLines, Switch, Lines, "Smooth edges", 0, 1, 1, nullptr,
+    o.smooth.placeOwnScaleLines,
+    "Where a region's curvature was read at the cloud's own spacing, move its smooth lines "
+    "onto the curvature step of the points under them too, fitted within 6 point spacings: "
+    "the curvature's levels alone leave them up to a spacing or two off the fillet border.")
 
 // Line graph (Demarsin et al. 2007, reused for smooth edges in Sec. 3): one length for the
 // graphs of sharp and smooth edges alike (graphLength).

@@ -383,6 +383,7 @@ ExtractionOptions extractionOptions(const Arguments& a)
         static_cast<int>(a.integer("--bins", o.smooth.histogram.bins, 2, 1000000));
     o.smooth.scales.maxScale = a.number("--max-scale", o.smooth.scales.maxScale, 1.0, 1000.0, true);
     o.smooth.placeCoarseLines = !a.has("--no-line-placement");
+    o.smooth.placeOwnScaleLines = o.smooth.placeCoarseLines;
     if (a.has("--outliers")) {
         o.smooth.histogram.outlierPercent = a.number("--outliers", 0.0, 0.0, 100.0, false);
     }
@@ -801,8 +802,8 @@ const std::vector<Command>& commands()
            "coarsest scale of the curvature, x spacing, 1 to 1000 (default 8; 1: the cloud's "
            "own sampling only)"},
           {"--no-line-placement", "",
-           "leave the smooth lines of a region read at a coarser scale where that scale put "
-           "them (default: moved onto the curvature step of the points under them)"},
+           "leave the smooth lines where the curvature's levels put them (default: moved onto "
+           "the curvature step of the points under them)"},
           {"--no-sharp", "", "no sharp edges (the whole cloud is one smooth region)"},
           {"--no-smooth", "", "no smooth edges"},
           {"--no-boundary", "", "no boundary lines of an open cloud"},

@@ -163,6 +163,12 @@ void requireLevelOptions(double threshold, const SmoothEdgeOptions& options)
     if (!(options.minRelativeContrast >= 0.0)) {
         throw std::invalid_argument("the least relative line contrast must not be negative");
     }
+    if (options.placeOwnScaleLines &&
+        !(options.ownScaleHalfWidth > 0.0 && options.ownScaleMaxShift > 0.0 &&
+          std::isfinite(options.ownScaleHalfWidth + options.ownScaleMaxShift))) {
+        throw std::invalid_argument(
+            "the own scale's strip half width and largest shift must be positive numbers");
+    }
     if (options.maxCandidateClusterSize < 1) {
         throw std::invalid_argument("the largest candidate cluster must hold at least one point");
     }
@@ -257,17 +263,26 @@ void dropLinesWithoutContrast(const RegionGeometry& region, const ClusterGraph& 
     dropLines(level.network, anchored, weak);
 }
 
-/// The graph's lines as the region keeps them: moved onto the curvature steps when read at a
-/// coarser scale, free ends anchored on the lines around, then short spurs and open pieces with
+/// The graph's lines as the region keeps them: moved onto the curvature steps (in strips
+/// widened to the fillet at a coarser scale, of a fixed width at the region's own), free ends
+/// anchored on the lines around, then short spurs and open pieces with
 /// an end on nothing dropped (SmoothEdgeOptions::graph.minOpenComponentLength).
 void finishLines(const RegionGeometry& region, const std::vector<Polyline>& anchors,
                  const SmoothEdgeOptions& options, SmoothEdgeLevel& level)
 {
-    if (options.placeCoarseLines && region.curvatureScale > 1.0) {
+    const bool coarse = region.curvatureScale > 1.0;
+    if (coarse ? options.placeCoarseLines : options.placeOwnScaleLines) {
+        LinePlacementOptions placement = options.placement;
+        if (!coarse) {
+            placement.halfWidth = options.ownScaleHalfWidth;
+            placement.radiusShare = 0.0;
+            placement.maxShift = options.ownScaleMaxShift / options.ownScaleHalfWidth;
+            placement.recentres = 0;
+        }
         placeOnCurvatureSteps(level.network,
                               {region.points, region.normals, region.curvature, region.spacing,
                                region.curvatureScale * region.spacing, level.threshold},
-                              options.placement);
+                              placement);
     }
     std::vector<char> anchored = anchorLineEnds(
         level.network, anchors, options.anchorReach * region.spacing, options.anchorAngle);

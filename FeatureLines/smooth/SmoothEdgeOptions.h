@@ -107,6 +107,17 @@ struct SmoothEdgeOptions
     bool placeCoarseLines = true;
     /// How they are moved (LinePlacement.h).
     LinePlacementOptions placement;
+    /// Move lines drawn at the region's own scale onto its curvature steps too, in strips of
+    /// the fixed half width ownScaleHalfWidth, by at most ownScaleMaxShift, without
+    /// recentring: such a line lies within a spacing or two of the border, and a strip widened
+    /// to the fillet's radius can reach the fillet's far border instead.
+    bool placeOwnScaleLines = true;
+    /// x spacing: the half width of those strips (6).
+    double ownScaleHalfWidth = 6.0;
+    /// x spacing: the farthest a vertex moves across there (1.5). Where both sides of a border
+    /// are curved (a spherical corner beside a fillet) the step model's straight side does not
+    /// hold, and under noise its best position can lie farther off than the line.
+    double ownScaleMaxShift = 1.5;
     /// The scales the curvature may be read at (CurvatureScale.h, beyond the paper).
     CurvatureScaleOptions scales;
     /// Seed of the random choice of growing seeds (Sec. 3).

@@ -190,8 +190,8 @@ const char* usage =
     "  --boundary-gap DEG      the extraction's boundary gap angle (default 120)\n"
     "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
     "                          (default 8; 1: the cloud's own sampling only)\n"
-    "  --no-line-placement     leave the lines of coarse-scale regions where the coarse\n"
-    "                          curvature put them (no fit of the curvature step)\n";
+    "  --no-line-placement     leave the smooth lines where the curvature's levels put\n"
+    "                          them (no fit of the curvature step)\n";
 
 /// Each point of `cloud` kept with probability `share` (seeded); all of them at share 1.
 SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
@@ -276,6 +276,7 @@ Arguments parseArguments(int argc, char** argv)
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
         } else if (opt == "--no-line-placement") {
             extractionOptions.smooth.placeCoarseLines = false;
+            extractionOptions.smooth.placeOwnScaleLines = false;
         } else if (opt == "--help" || opt == "-h") {
             std::cout << usage;
             std::exit(0);

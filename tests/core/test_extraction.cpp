@@ -278,6 +278,42 @@ TEST(Extraction, CloseFilletsGiveAllFourBordersEndingOnTheBoundary)
     }
 }
 
+// Issue 17 item 4: the borders of the same cap on the curvature step. The levels alone put a
+// line on the last labelled point, up to a spacing off; the fit of the step across it (at the
+// cloud's own scale, SmoothEdgeOptions::placeOwnScaleLines) puts the middle half of each line
+// within a quarter spacing of its border, clean.
+TEST(Extraction, CloseFilletsBordersLieOnTheCurvatureStep)
+{
+    const double h = 0.5, w = 6 * h, r = 10 * h, length = 80 * h;
+    const double truthX[4] = {-w / 2, w / 2, -(w / 2 + r), w / 2 + r};
+    const double truthZ[4] = {0.0, 0.0, -r, -r};
+    const shapes::Sample s = ribCap(w, r, 16 * h, length, h, 3);
+    auto medianOffset = [&](const ExtractionOptions& options) {
+        const ExtractionResult result = extractFeatureLines(s.points, options);
+        std::vector<double> offsets;
+        for (const FeatureLine* l : linesOf(result, LineType::Smooth)) {
+            for (Eigen::Index i = 0; i < l->points.rows(); ++i) {
+                if (std::abs(l->points(i, 1)) > length / 4) {
+                    continue; // the ends run to the boundary
+                }
+                double nearest = std::numeric_limits<double>::infinity();
+                for (int t = 0; t < 4; ++t) {
+                    nearest = std::min(nearest, std::hypot(l->points(i, 0) - truthX[t],
+                                                           l->points(i, 2) - truthZ[t]));
+                }
+                offsets.push_back(nearest);
+            }
+        }
+        EXPECT_GT(offsets.size(), 4u * 40u * 0.8) << "four borders of 40 spacings each";
+        std::nth_element(offsets.begin(), offsets.begin() + offsets.size() / 2, offsets.end());
+        return offsets[offsets.size() / 2] / h;
+    };
+    EXPECT_LT(medianOffset({}), 0.25);
+    ExtractionOptions levelsOnly;
+    levelsOnly.smooth.placeOwnScaleLines = false;
+    EXPECT_GT(medianOffset(levelsOnly), 0.25) << "the levels alone leave the lines off the step";
+}
+
 TEST(Extraction, NoisyCubeStillGivesTwelveSharpEdges)
 {
     shapes::Sample cube = shapes::cube(20.0, 0.5, 3);

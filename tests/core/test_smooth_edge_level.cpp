@@ -176,4 +176,9 @@ TEST(SmoothEdgeLevel, AHigherLevelsLineRisesFromTheLevelBeneath)
     negative.minRelativeContrast = -1.0;
     EXPECT_THROW(smoothEdgesAtThreshold(g, 0.13, negative), std::invalid_argument);
     EXPECT_THROW(smoothEdgesAtThreshold(g, 0.13, {}, {}, {}, std::nan("")), std::invalid_argument);
+    SmoothEdgeOptions noStrip;
+    noStrip.ownScaleHalfWidth = 0.0;
+    EXPECT_THROW(smoothEdgesAtThreshold(g, 0.13, noStrip), std::invalid_argument);
+    noStrip.placeOwnScaleLines = false; // then the strip is not used
+    EXPECT_NO_THROW(smoothEdgesAtThreshold(g, 0.13, noStrip));
 }
