@@ -2,6 +2,7 @@
 #include "FeatureLines/smooth/LinePlacement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -21,11 +22,16 @@ namespace featurelines {
 namespace {
 
 /// The points of P hashed into cubic cells `cell` wide: the points within `cell` of a query
-/// along every axis lie in its cell and the 26 around it.
+/// along every axis lie in its cell and the 26 around it. Only the cells within `margin` of a
+/// cell holding a vertex of `network` are kept (all of them when `margin` is over 3): a
+/// strip's centre moves from its vertex by at most its re-centrings, and its queries reach one
+/// cell around the centre. Hashing the whole region instead cost ten times the fits on a
+/// million points.
 class CellIndex
 {
 public:
-    CellIndex(const PointMatrix& P, double cell) : cell_(cell)
+    CellIndex(const PointMatrix& P, double cell, const LineNetwork& network, int margin)
+        : cell_(cell)
     {
         low_ =
             P.rows() > 0 ? Eigen::RowVector3d(P.colwise().minCoeff()) : Eigen::RowVector3d::Zero();
@@ -36,7 +42,30 @@ public:
             throw std::invalid_argument(
                 "line placement: the region spans too many strip widths to be indexed");
         }
-        keyed_ = gridCellKeys(P, low_, cell_);
+        const bool all = margin > 3;
+        const std::vector<std::uint64_t> wanted =
+            all ? std::vector<std::uint64_t>{} : cellsNearLines(network, margin);
+        const Eigen::Index n = P.rows();
+        std::vector<std::uint64_t> keyOf(static_cast<size_t>(n));
+        std::vector<char> kept(static_cast<size_t>(n), 0);
+#pragma omp parallel for schedule(static, 4096)
+        for (Eigen::Index i = 0; i < n; ++i) {
+            std::int64_t c[3];
+            cellOf(P.row(i), c);
+            const std::uint64_t key =
+                mortonKey(static_cast<std::uint64_t>(c[0]), static_cast<std::uint64_t>(c[1]),
+                          static_cast<std::uint64_t>(c[2]));
+            keyOf[static_cast<size_t>(i)] = key;
+            kept[static_cast<size_t>(i)] =
+                all || std::binary_search(wanted.begin(), wanted.end(), key);
+        }
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (kept[static_cast<size_t>(i)]) {
+                keyed_.emplace_back(keyOf[static_cast<size_t>(i)], static_cast<int>(i));
+            }
+        }
+        // Stable: the pairs come in index order, so this is their order by (key, index).
+        sortByMortonKey(keyed_);
     }
 
     /// Appends to `out` the points in q's cell and the cells around it.
@@ -68,6 +97,49 @@ public:
     }
 
 private:
+    /// q's cell, counted from low_ (negative or beyond the Morton range off the region).
+    void cellOf(const Eigen::RowVector3d& q, std::int64_t c[3]) const
+    {
+        for (int d = 0; d < 3; ++d) {
+            c[d] = static_cast<std::int64_t>(std::floor((q[d] - low_[d]) / cell_));
+        }
+    }
+
+    /// The Morton keys of the cells within `margin` of a cell holding a vertex of the network,
+    /// sorted, each once.
+    std::vector<std::uint64_t> cellsNearLines(const LineNetwork& network, int margin) const
+    {
+        std::vector<std::array<std::int64_t, 3>> holding;
+        for (const Polyline& line : network.lines) {
+            for (Eigen::Index i = 0; i < line.points.rows(); ++i) {
+                std::array<std::int64_t, 3> c;
+                cellOf(line.points.row(i), c.data());
+                holding.push_back(c);
+            }
+        }
+        std::sort(holding.begin(), holding.end());
+        holding.erase(std::unique(holding.begin(), holding.end()), holding.end());
+        const std::int64_t top = (std::int64_t{1} << mortonBitsPerAxis) - 1;
+        std::vector<std::uint64_t> keys;
+        for (const auto& c : holding) {
+            for (std::int64_t x = c[0] - margin; x <= c[0] + margin; ++x) {
+                for (std::int64_t y = c[1] - margin; y <= c[1] + margin; ++y) {
+                    for (std::int64_t z = c[2] - margin; z <= c[2] + margin; ++z) {
+                        if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top) {
+                            continue;
+                        }
+                        keys.push_back(mortonKey(static_cast<std::uint64_t>(x),
+                                                 static_cast<std::uint64_t>(y),
+                                                 static_cast<std::uint64_t>(z)));
+                    }
+                }
+            }
+        }
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        return keys;
+    }
+
     double cell_;
     Eigen::RowVector3d low_;
     std::vector<std::pair<std::uint64_t, int>> keyed_;
@@ -525,7 +597,12 @@ int placeOnCurvatureSteps(LineNetwork& network, const LinePlacementInput& input,
     const StripSize size = stripSize(input, options);
     const double W = size.halfWidth, L = size.halfLength, fitSpacing = input.fitSpacing;
     const double reach = std::sqrt(2 * W * W + L * L) * fitSpacing;
-    const PlacementContext ctx{input, options, size, CellIndex(input.points, reach)};
+    // The farthest a strip's centre moves from its vertex: its re-centrings, each by at most
+    // maxShift of the widest strip; the index keeps the cells it and one cell around can reach.
+    const double recentring = options.recentres * options.maxShift * W * fitSpacing;
+    const int margin = 1 + static_cast<int>(std::ceil(recentring / reach));
+    const PlacementContext ctx{input, options, size,
+                               CellIndex(input.points, reach, network, margin)};
 
     // Fitted vertices about fitStride strip half lengths apart: the strips of the vertices
     // between them would hold nearly the same points.
