@@ -13,7 +13,6 @@
 
 #include <Eigen/Dense>
 
-#include "FeatureLines/curvature/CurvatureScale.h"
 #include "FeatureLines/neighbourhoods/MortonOrder.h"
 #include "FeatureLines/smooth/StripFit.h"
 

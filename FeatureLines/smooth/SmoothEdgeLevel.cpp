@@ -265,8 +265,8 @@ void dropLinesWithoutContrast(const RegionGeometry& region, const ClusterGraph& 
 
 /// The graph's lines as the region keeps them: moved onto the curvature steps (in strips
 /// widened to the fillet at a coarser scale, of a fixed width at the region's own), free ends
-/// anchored on the lines around, then short spurs and open pieces with
-/// an end on nothing dropped (SmoothEdgeOptions::graph.minOpenComponentLength).
+/// anchored on the lines around, then short spurs and open pieces with an end on nothing
+/// dropped (SmoothEdgeOptions::graph.minOpenComponentLength).
 void finishLines(const RegionGeometry& region, const std::vector<Polyline>& anchors,
                  const SmoothEdgeOptions& options, SmoothEdgeLevel& level)
 {
