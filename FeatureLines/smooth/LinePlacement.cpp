@@ -71,9 +71,7 @@ public:
     void near(const Eigen::RowVector3d& q, std::vector<int>& out) const
     {
         std::int64_t c[3];
-        for (int d = 0; d < 3; ++d) {
-            c[d] = static_cast<std::int64_t>(std::floor((q[d] - low_[d]) / cell_));
-        }
+        cellOf(q, c);
         const std::int64_t top = (std::int64_t{1} << mortonBitsPerAxis) - 1;
         for (std::int64_t x = c[0] - 1; x <= c[0] + 1; ++x) {
             for (std::int64_t y = c[1] - 1; y <= c[1] + 1; ++y) {
