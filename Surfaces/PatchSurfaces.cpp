@@ -1,0 +1,411 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Patch faces: the fitted surface, the border's wires with curves on it made by ShapeFix
+// (projection of the network's edges), and the sewing of the faces (BRepBuilderAPI_Sewing).
+#include "PatchSurfaces.h"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_ListOfStatus.hxx>
+#include <BRepCheck_Result.hxx>
+#include <BRepClass_FaceClassifier.hxx>
+#include <BRep_Builder.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <gp_Pnt2d.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <ShapeAnalysis_ShapeTolerance.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopAbs_ShapeEnum.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Ax3.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+namespace featurelines::surfaces {
+
+namespace {
+
+gp_Pnt point(const Eigen::Vector3d& p)
+{
+    return gp_Pnt(p.x(), p.y(), p.z());
+}
+
+gp_Dir direction(const Eigen::Vector3d& d)
+{
+    if (!(d.norm() > 0.0) || !d.allFinite()) {
+        throw std::invalid_argument("a surface with a zero or non-finite axis");
+    }
+    return gp_Dir(d.x(), d.y(), d.z());
+}
+
+Handle(Geom_Surface) heightField(const FittedSurface& s)
+{
+    if (s.uPoles < 4 || s.vPoles < 4 || s.heights.size() != s.uPoles * s.vPoles ||
+        !(s.uMax > s.uMin) || !(s.vMax > s.vMin)) {
+        throw std::invalid_argument("a B-spline height field without its poles");
+    }
+    const Eigen::Vector3d e1 = s.uDirection.normalized();
+    const Eigen::Vector3d e2 = s.axis.normalized().cross(e1);
+    // Clamped uniform cubic knots; the poles at the Greville abscissae, so that u and v run
+    // linearly over the plane and the height is the fitted field's.
+    auto knots = [](int poles, TColStd_Array1OfReal& values, TColStd_Array1OfInteger& mults,
+                    std::vector<double>& greville) {
+        const int spans = poles - 3;
+        for (int i = 0; i <= spans; ++i) {
+            values.SetValue(i + 1, static_cast<double>(i) / spans);
+            mults.SetValue(i + 1, i == 0 || i == spans ? 4 : 1);
+        }
+        std::vector<double> full;
+        for (int i = 0; i < poles + 4; ++i) {
+            full.push_back(std::clamp(static_cast<double>(i - 3) / spans, 0.0, 1.0));
+        }
+        for (int i = 0; i < poles; ++i) {
+            greville.push_back((full[i + 1] + full[i + 2] + full[i + 3]) / 3.0);
+        }
+    };
+    TColStd_Array1OfReal uKnots(1, s.uPoles - 2);
+    TColStd_Array1OfInteger uMults(1, s.uPoles - 2);
+    TColStd_Array1OfReal vKnots(1, s.vPoles - 2);
+    TColStd_Array1OfInteger vMults(1, s.vPoles - 2);
+    std::vector<double> gu;
+    std::vector<double> gv;
+    knots(s.uPoles, uKnots, uMults, gu);
+    knots(s.vPoles, vKnots, vMults, gv);
+    TColgp_Array2OfPnt poles(1, s.uPoles, 1, s.vPoles);
+    for (int i = 0; i < s.uPoles; ++i) {
+        for (int j = 0; j < s.vPoles; ++j) {
+            const double u = s.uMin + gu[i] * (s.uMax - s.uMin);
+            const double v = s.vMin + gv[j] * (s.vMax - s.vMin);
+            poles.SetValue(i + 1, j + 1,
+                           point(s.origin + u * e1 + v * e2 + s.heights[i + j * s.uPoles] * s.axis));
+        }
+    }
+    return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3);
+}
+
+/// The face of `surface` bounded by `wires` (the outer first), with curves on the surface for
+/// every edge (ShapeFix projects the network's edges), or null. `wires` run either way round;
+/// the face is the side that holds `inside` (points of the patch): on a sphere or a cylinder
+/// either side of a loop is a face.
+TopoDS_Face trimmedFace(const Handle(Geom_Surface)& surface, const std::vector<TopoDS_Wire>& wires,
+                        const PointMatrix& inside, double precision, double maxTolerance)
+{
+    auto build = [&](bool reversed) {
+        auto wire = [&](size_t w) {
+            return reversed ? TopoDS::Wire(wires[w].Reversed()) : wires[w];
+        };
+        BRepBuilderAPI_MakeFace make(surface, wire(0), Standard_True);
+        for (size_t w = 1; w < wires.size() && make.IsDone(); ++w) {
+            make.Add(wire(w));
+        }
+        if (!make.IsDone()) {
+            return TopoDS_Face();
+        }
+        ShapeFix_Face fix(make.Face());
+        fix.SetPrecision(precision);
+        fix.SetMaxTolerance(maxTolerance);
+        fix.FixAddNaturalBoundMode() = 0;
+        fix.FixOrientationMode() = 0;
+        fix.Perform();
+        return fix.Face();
+    };
+    // The share of the sample of `inside` the face holds.
+    auto holds = [&](const TopoDS_Face& face) {
+        int in = 0;
+        int tried = 0;
+        const Eigen::Index step = std::max<Eigen::Index>(1, inside.rows() / 25);
+        for (Eigen::Index i = 0; i < inside.rows(); i += step) {
+            GeomAPI_ProjectPointOnSurf projection(gp_Pnt(inside(i, 0), inside(i, 1), inside(i, 2)),
+                                                  surface);
+            if (projection.NbPoints() == 0) {
+                continue;
+            }
+            double u = 0.0;
+            double v = 0.0;
+            projection.LowerDistanceParameters(u, v);
+            BRepClass_FaceClassifier classifier(face, gp_Pnt2d(u, v), precision);
+            in += classifier.State() == TopAbs_IN ? 1 : 0;
+            ++tried;
+        }
+        return tried > 0 ? static_cast<double>(in) / tried : 0.0;
+    };
+    TopoDS_Face face = build(false);
+    if (face.IsNull() || holds(face) < 0.5) {
+        const TopoDS_Face other = build(true);
+        if (!other.IsNull() && (face.IsNull() || holds(other) > holds(face))) {
+            face = other;
+        }
+    }
+    return face;
+}
+
+/// A sphere's or cylinder's parametrisation placed for the patch: its seam (and a sphere's
+/// poles) away from the patch's points where they leave room, else the seam through a vertex of
+/// the border (a cylinder's band all round, a sphere beyond a hemisphere), so that the border's
+/// edges need not be cut where the seam crosses them.
+void placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& border,
+               const CurveNetwork& network)
+{
+    if (s.kind != SurfaceKind::Sphere && s.kind != SurfaceKind::Cylinder) {
+        return;
+    }
+    const LoopEdge& first = border.loops.front().front();
+    const NetworkEdge& edge = network.edges[static_cast<size_t>(first.edge)];
+    const Eigen::Vector3d vertex = (first.reversed ? edge.curve.end : edge.curve.start) - s.origin;
+    if (s.kind == SurfaceKind::Sphere) {
+        // A cap within 80 degrees of its mean direction: the poles at right angles to it, the
+        // seam opposite it.
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (Eigen::Index i = 0; i < points.rows(); ++i) {
+            mean += (points.row(i).transpose() - s.origin).normalized();
+        }
+        if (mean.norm() > 0.0) {
+            mean.normalize();
+            double widest = 1.0;
+            for (Eigen::Index i = 0; i < points.rows(); ++i) {
+                widest = std::min(widest, (points.row(i).transpose() - s.origin).normalized().dot(mean));
+            }
+            if (widest > std::cos(80.0 * M_PI / 180.0)) {
+                s.axis = mean.unitOrthogonal();
+                s.seam = -mean;
+                return;
+            }
+        }
+        s.seam = vertex;
+        return;
+    }
+    // A cylinder: the middle of the widest angular gap between its points, when over 20
+    // degrees.
+    const Eigen::Vector3d a = s.axis.normalized();
+    const Eigen::Vector3d e1 = a.unitOrthogonal();
+    const Eigen::Vector3d e2 = a.cross(e1);
+    std::vector<double> angles;
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+        const Eigen::Vector3d d = points.row(i).transpose() - s.origin;
+        angles.push_back(std::atan2(d.dot(e2), d.dot(e1)));
+    }
+    std::sort(angles.begin(), angles.end());
+    double gap = 0.0;
+    double middle = 0.0;
+    for (size_t i = 0; i < angles.size(); ++i) {
+        const double next = i + 1 < angles.size() ? angles[i + 1] : angles.front() + 2.0 * M_PI;
+        if (next - angles[i] > gap) {
+            gap = next - angles[i];
+            middle = angles[i] + gap / 2.0;
+        }
+    }
+    s.seam = gap > 20.0 * M_PI / 180.0 ? Eigen::Vector3d(std::cos(middle) * e1 + std::sin(middle) * e2)
+                                       : vertex;
+}
+
+/// What BRepCheck finds wrong with `shape` or its edges, wires and vertices: the first few
+/// statuses, by name ("" when it finds nothing).
+std::string checkProblems(const TopoDS_Shape& shape)
+{
+    BRepCheck_Analyzer analyzer(shape);
+    if (analyzer.IsValid()) {
+        return "";
+    }
+    std::ostringstream text;
+    int listed = 0;
+    auto list = [&](const TopoDS_Shape& sub, const char* what) {
+        const Handle(BRepCheck_Result) result = analyzer.Result(sub);
+        if (result.IsNull()) {
+            return;
+        }
+        auto print = [&](const BRepCheck_ListOfStatus& statuses) {
+            for (BRepCheck_ListIteratorOfListOfStatus it(statuses); it.More(); it.Next()) {
+                if (it.Value() != BRepCheck_NoError && listed < 4) {
+                    text << (listed++ ? ", " : "") << what << " ";
+                    BRepCheck::Print(it.Value(), text);
+                }
+            }
+        };
+        // The sub-shape's own statuses, then those in the context of the shapes around it.
+        print(result->Status());
+        for (result->InitContextIterator(); result->MoreShapeInContext();
+             result->NextShapeInContext()) {
+            print(result->StatusOnShape());
+        }
+    };
+    list(shape, "face");
+    for (TopExp_Explorer e(shape, TopAbs_WIRE); e.More(); e.Next()) {
+        list(e.Current(), "wire");
+    }
+    for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+        list(e.Current(), "edge");
+    }
+    std::string out = text.str();
+    out.erase(std::remove(out.begin(), out.end(), '\n'), out.end());
+    return out.empty() ? "invalid" : out;
+}
+
+} // namespace
+
+Handle(Geom_Surface) makeSurface(const FittedSurface& s)
+{
+    switch (s.kind) {
+    case SurfaceKind::Plane:
+        return new Geom_Plane(gp_Ax3(point(s.origin), direction(s.axis)));
+    case SurfaceKind::Sphere:
+    case SurfaceKind::Cylinder: {
+        if (!(s.radius > 0.0) || !std::isfinite(s.radius)) {
+            throw std::invalid_argument(std::string("a ") + surfaceKindName(s.kind) +
+                                        " of radius " + std::to_string(s.radius));
+        }
+        gp_Ax3 frame(point(s.origin), direction(s.axis));
+        const Eigen::Vector3d seam = s.seam - s.seam.dot(s.axis.normalized()) * s.axis.normalized();
+        if (seam.norm() > 1e-9 * std::max(1.0, s.seam.norm())) {
+            frame.SetXDirection(direction(seam));
+        }
+        if (s.kind == SurfaceKind::Sphere) {
+            return new Geom_SphericalSurface(frame, s.radius);
+        }
+        return new Geom_CylindricalSurface(frame, s.radius);
+    }
+    case SurfaceKind::BSpline:
+        return heightField(s);
+    }
+    throw std::invalid_argument("an unknown surface kind");
+}
+
+PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& result,
+                               const CurveNetwork& network,
+                               const std::vector<PatchBorder>& borders,
+                               const cad::NetworkShapes& shapes, double noise,
+                               const PatchSurfaceOptions& options)
+{
+    if (static_cast<Eigen::Index>(result.patch.size()) != P.rows()) {
+        throw std::invalid_argument("the extraction result has " +
+                                    std::to_string(result.patch.size()) + " patch ids for " +
+                                    std::to_string(P.rows()) + " points");
+    }
+    const double spacing = result.spacing;
+    std::map<int, std::vector<Eigen::Index>> rows;
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        if (result.patch[static_cast<size_t>(i)] >= 0) {
+            rows[result.patch[static_cast<size_t>(i)]].push_back(i);
+        }
+    }
+    PatchSurfaces out;
+    const double sewing = options.sewingTolerance * spacing;
+    BRepBuilderAPI_Sewing sew(sewing);
+    int added = 0;
+    for (const PatchBorder& border : borders) {
+        PatchFace pf;
+        pf.patch = border.patch;
+        const std::string name = "patch " + std::to_string(border.patch);
+        const auto found = rows.find(border.patch);
+        pf.points = found == rows.end() ? 0 : static_cast<int>(found->second.size());
+        const cad::BorderWires wires = cad::makeBorderWires(border, shapes);
+        if (wires.wires.empty()) {
+            pf.problem = wires.problem;
+        } else {
+            try {
+                PointMatrix points(pf.points, 3);
+                for (int i = 0; i < pf.points; ++i) {
+                    points.row(i) = P.row(found->second[static_cast<size_t>(i)]);
+                }
+                pf.surface = fitSurface(points, spacing, noise, options.fit);
+                placeSeam(pf.surface, points, border, network);
+                pf.face = trimmedFace(makeSurface(pf.surface), wires.wires, points,
+                                      0.01 * spacing, sewing);
+                const std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
+                if (!check.empty()) {
+                    pf.problem = name + ": OpenCASCADE made no valid face of its " +
+                                 surfaceKindName(pf.surface.kind) + " and border (" + check + ")";
+                    pf.face.Nullify();
+                }
+            } catch (const std::invalid_argument& e) {
+                pf.problem = name + ": " + e.what();
+            } catch (const Standard_Failure& e) {
+                pf.problem = name + ": OpenCASCADE failed: " + e.GetMessageString();
+            }
+        }
+        if (!pf.face.IsNull()) {
+            sew.Add(pf.face);
+            ++added;
+        } else {
+            out.problems.push_back(pf.problem);
+        }
+        out.faces.push_back(std::move(pf));
+    }
+    if (added == 0) {
+        return out;
+    }
+    try {
+        sew.Perform();
+        TopoDS_Shape sewn = sew.SewedShape();
+        if (sewn.ShapeType() == TopAbs_SHELL && BRep_Tool::IsClosed(sewn)) {
+            BRepBuilderAPI_MakeSolid make(TopoDS::Shell(sewn));
+            if (make.IsDone()) {
+                ShapeFix_Solid fix(make.Solid());
+                fix.Perform();
+                const TopoDS_Shape solid = fix.Solid();
+                if (!solid.IsNull() && solid.ShapeType() == TopAbs_SOLID) {
+                    sewn = solid;
+                    out.solid = true;
+                }
+            }
+        }
+        out.shape = sewn;
+        out.valid = BRepCheck_Analyzer(out.shape).IsValid();
+        ShapeAnalysis_ShapeTolerance tolerance;
+        out.tolerance = std::max(tolerance.Tolerance(out.shape, 1, TopAbs_EDGE),
+                                 tolerance.Tolerance(out.shape, 1, TopAbs_VERTEX));
+        if (out.solid && !out.valid) {
+            out.problems.push_back("the sewn solid is not valid (BRepCheck_Analyzer)");
+        }
+    } catch (const Standard_Failure& e) {
+        out.problems.push_back(std::string("sewing failed: ") + e.GetMessageString());
+    }
+    return out;
+}
+
+double medianNoise(const ExtractionResult& result)
+{
+    std::vector<double> noise;
+    for (const RegionReport& r : result.regions) {
+        if (std::isfinite(r.noise)) {
+            noise.push_back(r.noise);
+        }
+    }
+    if (noise.empty()) {
+        return 0.0;
+    }
+    std::nth_element(noise.begin(), noise.begin() + static_cast<std::ptrdiff_t>(noise.size() / 2),
+                     noise.end());
+    return noise[noise.size() / 2];
+}
+
+PatchSurfaces surfacesOfExtraction(const PointMatrix& P, const ExtractionResult& result,
+                                   const CurveFitOptions& fit, const PatchSurfaceOptions& options)
+{
+    const CurveNetwork network = fitCurveNetwork(result, fit);
+    const cad::NetworkShapes shapes =
+        cad::makeNetworkShapes(network, gp_Trsf(), 2.0 * result.spacing);
+    const std::vector<PatchBorder> borders = patchBorders(network, result, P);
+    return fitPatchSurfaces(P, result, network, borders, shapes, medianNoise(result), options);
+}
+
+} // namespace featurelines::surfaces

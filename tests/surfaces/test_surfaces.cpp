@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// From lines to surfaces with known answers: sampled primitives are recognised with their
+// radii; a saddle is a B-spline within a fraction of a spacing; a sampled box goes from its
+// cloud to 6 planes sewn into a valid solid of the box's volume, clean and noisy; a cylinder
+// with flat ends to 1 cylinder of its radius and 2 planes.
+#include <gtest/gtest.h>
+
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+
+#include <cmath>
+#include <random>
+
+#include "FeatureLines/Extraction.h"
+#include "FeatureLines/curves/CurveNetwork.h"
+#include "PatchSurfaces.h"
+#include "SampledShapes.h"
+#include "SurfaceFit.h"
+
+using namespace featurelines;
+using namespace featurelines::surfaces;
+
+namespace {
+
+TEST(SurfaceFit, ASampledPlaneIsAPlane)
+{
+    const shapes::Sample s = shapes::plane(20.0, 1.0, 1);
+    const FittedSurface f = fitSurface(s.points, 1.0);
+    EXPECT_EQ(f.kind, SurfaceKind::Plane);
+    EXPECT_NEAR(std::abs(f.axis.z()), 1.0, 1e-9);
+    EXPECT_LT(f.maxDeviation, 1e-9);
+}
+
+TEST(SurfaceFit, ASampledSphereIsASphereOfItsRadius)
+{
+    shapes::Sample s = shapes::sphere(10.0, 1.0, 2);
+    FittedSurface f = fitSurface(s.points, 1.0);
+    EXPECT_EQ(f.kind, SurfaceKind::Sphere);
+    EXPECT_NEAR(f.radius, 10.0, 0.01);
+    EXPECT_LT(f.origin.norm(), 0.01);
+    // With noise of 0.2 spacing the radius stays within 1 %.
+    shapes::addNormalNoise(s, 0.2, 3);
+    f = fitSurface(s.points, 1.0, 0.2);
+    EXPECT_EQ(f.kind, SurfaceKind::Sphere);
+    EXPECT_NEAR(f.radius, 10.0, 0.1);
+}
+
+TEST(SurfaceFit, ASampledCylinderIsACylinderOfItsRadiusAndAxis)
+{
+    shapes::Sample s = shapes::cylinder(8.0, 30.0, 1.0, 4);
+    // Tilted and moved: the axis is found, not assumed.
+    const Eigen::Matrix3d R =
+        Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
+    const Eigen::Vector3d shift(3.0, -2.0, 7.0);
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+        s.points.row(i) = (R * s.points.row(i).transpose() + shift).transpose();
+    }
+    const FittedSurface f = fitSurface(s.points, 1.0);
+    EXPECT_EQ(f.kind, SurfaceKind::Cylinder);
+    EXPECT_NEAR(f.radius, 8.0, 0.01);
+    EXPECT_NEAR(std::abs(f.axis.dot(R * Eigen::Vector3d::UnitZ())), 1.0, 1e-6);
+    const Eigen::Vector3d d = f.origin - shift;
+    EXPECT_LT((d - d.dot(f.axis) * f.axis).norm(), 0.01);
+}
+
+TEST(SurfaceFit, ASaddleIsABSplineCloseToItsPoints)
+{
+    // z = (x^2 - y^2) / 40 over [-10, 10]^2: no plane, sphere or cylinder.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    PointMatrix P(600, 3);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const double x = u(rng);
+        const double y = u(rng);
+        P.row(i) << x, y, (x * x - y * y) / 40.0;
+    }
+    const FittedSurface f = fitSurface(P, 1.0);
+    EXPECT_EQ(f.kind, SurfaceKind::BSpline);
+    EXPECT_LT(f.rmsDeviation, 0.05);
+    EXPECT_LT(surfaceDistance(f, Eigen::Vector3d(5.0, 5.0, 0.0)), 0.05);
+    EXPECT_NEAR(surfaceDistance(f, Eigen::Vector3d(5.0, 0.0, 0.0)), 25.0 / 40.0, 0.05);
+}
+
+TEST(SurfaceFit, BadPatchesAreNamed)
+{
+    PointMatrix few(5, 3);
+    few.setRandom();
+    EXPECT_THROW(fitSurface(few, 1.0), std::invalid_argument);
+    PointMatrix line(10, 3);
+    for (int i = 0; i < 10; ++i) {
+        line.row(i) << i, 2.0 * i, 0.0;
+    }
+    EXPECT_THROW(fitSurface(line, 1.0), std::invalid_argument);
+    PointMatrix bad = shapes::plane(10.0, 1.0, 1).points;
+    bad(3, 1) = std::nan("");
+    EXPECT_THROW(fitSurface(bad, 1.0), std::invalid_argument);
+    EXPECT_THROW(fitSurface(shapes::plane(10.0, 1.0, 1).points, 0.0), std::invalid_argument);
+}
+
+/// The cloud's lines, network, borders and patch surfaces.
+PatchSurfaces surfacesOf(const PointMatrix& P)
+{
+    return surfacesOfExtraction(P, extractFeatureLines(P));
+}
+
+double volumeOf(const TopoDS_Shape& shape)
+{
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(shape, props);
+    return std::abs(props.Mass());
+}
+
+int countKind(const PatchSurfaces& s, SurfaceKind kind)
+{
+    int n = 0;
+    for (const PatchFace& f : s.faces) {
+        n += !f.face.IsNull() && f.surface.kind == kind ? 1 : 0;
+    }
+    return n;
+}
+
+TEST(PatchSurfaces, ASampledBoxIsSixPlanesSewnIntoASolidOfItsVolume)
+{
+    const double edge = 30.0;
+    const shapes::Sample s = shapes::cube(edge, 1.0, 7);
+    const PatchSurfaces out = surfacesOf(s.points);
+    for (const std::string& p : out.problems) {
+        ADD_FAILURE() << p;
+    }
+    EXPECT_EQ(countKind(out, SurfaceKind::Plane), 6);
+    EXPECT_EQ(out.faces.size(), 6u);
+    ASSERT_TRUE(out.solid);
+    EXPECT_TRUE(out.valid);
+    EXPECT_NEAR(volumeOf(out.shape), edge * edge * edge, 0.01 * edge * edge * edge);
+}
+
+TEST(PatchSurfaces, ANoisyBoxStillGivesAValidSolid)
+{
+    const double edge = 30.0;
+    shapes::Sample s = shapes::cube(edge, 1.0, 8);
+    shapes::addNormalNoise(s, 0.3, 9);
+    const PatchSurfaces out = surfacesOf(s.points);
+    EXPECT_EQ(countKind(out, SurfaceKind::Plane), 6);
+    ASSERT_TRUE(out.solid);
+    EXPECT_TRUE(out.valid);
+    EXPECT_NEAR(volumeOf(out.shape), edge * edge * edge, 0.02 * edge * edge * edge);
+}
+
+TEST(PatchSurfaces, ACylinderWithFlatEndsIsACylinderOfItsRadiusAndTwoPlanes)
+{
+    const double r = 10.0;
+    const double h = 30.0;
+    shapes::Sample side = shapes::cylinder(r, h, 1.0, 10);
+    // The two ends: discs sampled on a jittered grid one spacing apart.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+    std::vector<Eigen::Vector3d> points;
+    for (Eigen::Index i = 0; i < side.points.rows(); ++i) {
+        points.push_back(side.points.row(i).transpose());
+    }
+    for (double z : {-h / 2.0, h / 2.0}) {
+        for (double x = -r + 0.5; x < r; x += 1.0) {
+            for (double y = -r + 0.5; y < r; y += 1.0) {
+                const Eigen::Vector3d p(x + jitter(rng), y + jitter(rng), z);
+                if (std::hypot(p.x(), p.y()) < r - 0.3) {
+                    points.push_back(p);
+                }
+            }
+        }
+    }
+    PointMatrix P(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) {
+        P.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    }
+    const PatchSurfaces out = surfacesOf(P);
+    for (const std::string& p : out.problems) {
+        ADD_FAILURE() << p;
+    }
+    EXPECT_EQ(countKind(out, SurfaceKind::Plane), 2);
+    ASSERT_EQ(countKind(out, SurfaceKind::Cylinder), 1);
+    for (const PatchFace& f : out.faces) {
+        if (f.surface.kind == SurfaceKind::Cylinder) {
+            EXPECT_NEAR(f.surface.radius, r, 0.05 * r);
+        }
+    }
+    ASSERT_TRUE(out.solid) << "shape type " << (out.shape.IsNull() ? -1 : out.shape.ShapeType());
+    EXPECT_TRUE(out.valid);
+    EXPECT_NEAR(volumeOf(out.shape), M_PI * r * r * h, 0.03 * M_PI * r * r * h);
+}
+
+} // namespace
