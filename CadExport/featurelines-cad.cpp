@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// featurelines-cad: the fitted line network of a cloud as a CAD file (STEP or BREP) that other
-// CAD tools read. The core's extraction and curve fitting (FeatureLines/curves/CurveNetwork.h),
+// featurelines-cad: the fitted line network of a cloud, or the patches' surfaces sewn along it
+// (--surfaces), as a CAD file (STEP or BREP) that other CAD tools read. The core's extraction and curve fitting (FeatureLines/curves/CurveNetwork.h),
 // the shapes of CurveShapes.h, OpenCASCADE's writers; no FreeCAD.
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "CurveShapes.h"
+#include "PatchSurfaces.h"
 #include "FeatureLines/Extraction.h"
 #include "FeatureLines/cli/Arguments.h"
 #include "FeatureLines/cli/Inputs.h"
@@ -39,6 +40,10 @@ const std::vector<OptionSpec>& extractOptions()
          "-o"},
         {"--borders", "",
          "BREP only: also the closed border wires of the patches, on the same edges"},
+        {"--surfaces", "",
+         "write the patches' fitted surfaces instead of the lines: a plane, sphere, cylinder, "
+         "cone, torus or B-spline per patch with a closed border, trimmed by it, the faces sewn (a solid "
+         "where they close)"},
         {"--tolerance", "T",
          "curve fitting tolerance, x point spacing (default 0.25; raised to twice the noise)"},
         {"--thresholds", "T1,T2", "explicit curvature thresholds (1/length) for every region"},
@@ -155,6 +160,38 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path, CadFormat fo
     }
 }
 
+/// --surfaces: the sewn patch surfaces written, the faces left out named on standard error.
+int writeSurfaces(const std::string& input, const PointMatrix& P, const ExtractionResult& result,
+                  const CurveFitOptions& fit, const std::string& output, CadFormat format)
+{
+    const surfaces::PatchSurfaces sewn = surfaces::surfacesOfExtraction(P, result, fit);
+    for (const std::string& problem : sewn.problems) {
+        std::cerr << "featurelines-cad: " << cli::inputName(input) << ": " << problem << "\n";
+    }
+    if (sewn.shape.IsNull()) {
+        throw std::runtime_error(cli::inputName(input) + ": no patch got a surface (" +
+                                 std::to_string(sewn.faces.size()) +
+                                 " patches; see the lines above), nothing written");
+    }
+    writeShape(sewn.shape, output, format);
+    int counts[6] = {0, 0, 0, 0, 0, 0};
+    int faces = 0;
+    for (const surfaces::PatchFace& f : sewn.faces) {
+        if (!f.face.IsNull()) {
+            ++counts[static_cast<int>(f.surface.kind)];
+            ++faces;
+        }
+    }
+    std::cout << cli::inputName(input) << ": " << faces << " of " << sewn.faces.size()
+              << " patches got a face (" << counts[0] << " planes, " << counts[1] << " spheres, "
+              << counts[2] << " cylinders, " << counts[3] << " cones, " << counts[4] << " tori, "
+              << counts[5] << " B-splines), sewn into "
+              << (sewn.solid ? (sewn.valid ? "a valid solid" : "a solid BRepCheck finds invalid")
+                             : "an open shell")
+              << ", tolerance " << sewn.tolerance << " -> " << output << "\n";
+    return 0;
+}
+
 int runExtract(const Arguments& a)
 {
     if (a.positional().size() != 1) {
@@ -172,6 +209,9 @@ int runExtract(const Arguments& a)
                          "output");
     }
     const CadFormat format = formatOf(output);
+    if (a.has("--borders") && a.has("--surfaces")) {
+        throw UsageError("--borders and --surfaces write different shapes: give one");
+    }
     if (a.has("--borders") && format != CadFormat::Brep) {
         throw UsageError("--borders needs a .brep output: STEP keeps no shared edges, so each "
                          "border would repeat them");
@@ -184,6 +224,9 @@ int runExtract(const Arguments& a)
 
     const PointMatrix P = cli::readInput(input, stdinFormat);
     const ExtractionResult result = extractFeatureLines(P, options);
+    if (a.has("--surfaces")) {
+        return writeSurfaces(input, P, result, fit, output, format);
+    }
     const CurveNetwork network = fitCurveNetwork(result, fit);
     // As the FreeCAD module: a curve straying more than 2 spacings from its points is a failed
     // fit, written as its polyline.

@@ -3,7 +3,13 @@
 // (projection of the network's edges), and the sewing of the faces (BRepBuilderAPI_Sewing).
 #include "PatchSurfaces.h"
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <Precision.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck.hxx>
@@ -16,9 +22,11 @@
 #include <gp_Pnt2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <ShapeAnalysis_ShapeTolerance.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Solid.hxx>
@@ -35,6 +43,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -103,6 +112,71 @@ Handle(Geom_Surface) heightField(const FittedSurface& s)
     return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3);
 }
 
+/// `wire` turned, if need be, so that the patch's points lie on its left, seen from the
+/// surface's normal: a vote over the midpoints of its edges, each against the nearest of the
+/// points. The network's loops run either way round; a surface's face lies left of its wires
+/// (a band of a cylinder between two circles needs them to run opposite ways).
+TopoDS_Wire orientedWire(const TopoDS_Wire& wire, const Handle(Geom_Surface)& surface,
+                         const PointMatrix& points)
+{
+    int left = 0;
+    int right = 0;
+    const Eigen::Index step = std::max<Eigen::Index>(1, points.rows() / 4000);
+    for (BRepTools_WireExplorer e(wire); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = e.Current();
+        BRepAdaptor_Curve curve(edge);
+        const double t = 0.5 * (curve.FirstParameter() + curve.LastParameter());
+        gp_Pnt x;
+        gp_Vec tangent;
+        curve.D1(t, x, tangent);
+        if (edge.Orientation() == TopAbs_REVERSED) {
+            tangent.Reverse();
+        }
+        GeomAPI_ProjectPointOnSurf projection(x, surface);
+        if (projection.NbPoints() == 0 || tangent.Magnitude() < Precision::Confusion()) {
+            continue;
+        }
+        double u = 0.0;
+        double v = 0.0;
+        projection.LowerDistanceParameters(u, v);
+        GeomLProp_SLProps props(surface, u, v, 1, Precision::Confusion());
+        if (!props.IsNormalDefined()) {
+            continue;
+        }
+        const gp_Dir n = props.Normal();
+        Eigen::Index nearest = -1;
+        double best = std::numeric_limits<double>::max();
+        for (Eigen::Index i = 0; i < points.rows(); i += step) {
+            const double d = gp_Pnt(points(i, 0), points(i, 1), points(i, 2)).SquareDistance(x);
+            if (d < best) {
+                best = d;
+                nearest = i;
+            }
+        }
+        if (nearest < 0) {
+            continue;
+        }
+        const gp_Vec toPoint(x, gp_Pnt(points(nearest, 0), points(nearest, 1), points(nearest, 2)));
+        const double side = gp_Vec(n).Crossed(tangent).Dot(toPoint);
+        left += side > 0.0 ? 1 : 0;
+        right += side < 0.0 ? 1 : 0;
+    }
+    if (right <= left) {
+        return wire;
+    }
+    // The same edges, each reversed, in the opposite order: a wire of its own rather than a
+    // reversed wire, whose flag ShapeFix's seam does not follow.
+    std::vector<TopoDS_Edge> edges;
+    for (BRepTools_WireExplorer e(wire); e.More(); e.Next()) {
+        edges.push_back(TopoDS::Edge(e.Current().Reversed()));
+    }
+    BRepBuilderAPI_MakeWire make;
+    for (auto it = edges.rbegin(); it != edges.rend(); ++it) {
+        make.Add(*it);
+    }
+    return make.IsDone() ? make.Wire() : TopoDS::Wire(wire.Reversed());
+}
+
 /// The face of `surface` bounded by `wires` (the outer first), with curves on the surface for
 /// every edge (ShapeFix projects the network's edges), or null. `wires` run either way round;
 /// the face is the side that holds `inside` (points of the patch): on a sphere or a cylinder
@@ -111,8 +185,13 @@ TopoDS_Face trimmedFace(const Handle(Geom_Surface)& surface, const std::vector<T
                         const PointMatrix& inside, double precision, double maxTolerance)
 {
     auto build = [&](bool reversed) {
+        // A copy of each wire: ShapeFix gives the edges curves on this face's surface and may
+        // cut them at its seam, which must not change the faces that share the network's
+        // edges (the sewing joins the copies again).
         auto wire = [&](size_t w) {
-            return reversed ? TopoDS::Wire(wires[w].Reversed()) : wires[w];
+            const TopoDS_Wire copy = orientedWire(
+                TopoDS::Wire(BRepBuilderAPI_Copy(wires[w]).Shape()), surface, inside);
+            return reversed ? TopoDS::Wire(copy.Reversed()) : copy;
         };
         BRepBuilderAPI_MakeFace make(surface, wire(0), Standard_True);
         for (size_t w = 1; w < wires.size() && make.IsDone(); ++w) {
@@ -163,11 +242,12 @@ TopoDS_Face trimmedFace(const Handle(Geom_Surface)& surface, const std::vector<T
 /// poles) away from the patch's points where they leave room, else the seam through a vertex of
 /// the border (a cylinder's band all round, a sphere beyond a hemisphere), so that the border's
 /// edges need not be cut where the seam crosses them.
-void placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& border,
+/// Returns whether the points wrap all round (the seam runs through the vertex).
+bool placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& border,
                const CurveNetwork& network)
 {
-    if (s.kind != SurfaceKind::Sphere && s.kind != SurfaceKind::Cylinder) {
-        return;
+    if (s.kind == SurfaceKind::Plane || s.kind == SurfaceKind::BSpline) {
+        return false;
     }
     const LoopEdge& first = border.loops.front().front();
     const NetworkEdge& edge = network.edges[static_cast<size_t>(first.edge)];
@@ -188,14 +268,14 @@ void placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& b
             if (widest > std::cos(80.0 * M_PI / 180.0)) {
                 s.axis = mean.unitOrthogonal();
                 s.seam = -mean;
-                return;
+                return false;
             }
         }
         s.seam = vertex;
-        return;
+        return true;
     }
-    // A cylinder: the middle of the widest angular gap between its points, when over 20
-    // degrees.
+    // About an axis (cylinder, cone, torus): the middle of the widest angular gap between its
+    // points, when over 20 degrees.
     const Eigen::Vector3d a = s.axis.normalized();
     const Eigen::Vector3d e1 = a.unitOrthogonal();
     const Eigen::Vector3d e2 = a.cross(e1);
@@ -214,8 +294,99 @@ void placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& b
             middle = angles[i] + gap / 2.0;
         }
     }
-    s.seam = gap > 20.0 * M_PI / 180.0 ? Eigen::Vector3d(std::cos(middle) * e1 + std::sin(middle) * e2)
-                                       : vertex;
+    const bool wraps = !(gap > 20.0 * M_PI / 180.0);
+    s.seam = wraps ? vertex : Eigen::Vector3d(std::cos(middle) * e1 + std::sin(middle) * e2);
+    return wraps;
+}
+
+/// The surface parameter across the axis's circles of a surface of revolution at x: the
+/// height (cylinder), the length along the cone's lines, the angle round the tube (torus, in
+/// [0, 2 pi), 0 outermost), as OpenCASCADE parametrises them.
+double acrossParameter(const FittedSurface& s, const Eigen::Vector3d& x)
+{
+    const Eigen::Vector3d a = s.axis.normalized();
+    const Eigen::Vector3d d = x - s.origin;
+    const double h = d.dot(a);
+    switch (s.kind) {
+    case SurfaceKind::Cone:
+        return h / std::cos(s.halfAngle);
+    case SurfaceKind::Torus: {
+        const double v = std::atan2(h, (d - h * a).norm() - s.radius);
+        return v < 0.0 ? v + 2.0 * M_PI : v;
+    }
+    default:
+        return h;
+    }
+}
+
+/// A band of a cylinder, cone or torus (its points all round the axis) between two loops that
+/// each run along one of the surface's circles (the rims of a bore or a boss, a fillet round
+/// it): the surface between those circles, whose own circles and seam OpenCASCADE makes
+/// (ShapeFix_Face leaves such a band with its seam used once). Null when the patch is no such
+/// band.
+TopoDS_Face revolutionBand(const FittedSurface& s, const Handle(Geom_Surface)& surface,
+                           const PatchBorder& border, const CurveNetwork& network,
+                           const PointMatrix& inside, double flat)
+{
+    const bool revolution = s.kind == SurfaceKind::Cylinder || s.kind == SurfaceKind::Cone ||
+                            s.kind == SurfaceKind::Torus;
+    if (!revolution || border.loops.size() != 2) {
+        return TopoDS_Face();
+    }
+    // Lengths across the circles per unit of the parameter.
+    const double scale = s.kind == SurfaceKind::Torus ? s.minorRadius : 1.0;
+    double at[2];
+    for (int l = 0; l < 2; ++l) {
+        std::vector<double> values;
+        for (const LoopEdge& le : border.loops[static_cast<size_t>(l)]) {
+            const PointMatrix& points = network.edges[static_cast<size_t>(le.edge)].points;
+            for (Eigen::Index i = 0; i < points.rows(); ++i) {
+                values.push_back(acrossParameter(s, points.row(i).transpose()));
+            }
+        }
+        if (values.empty()) {
+            return TopoDS_Face();
+        }
+        // On a torus the angles may straddle 0: read them about their first.
+        const double first = values.front();
+        for (double& v : values) {
+            if (s.kind == SurfaceKind::Torus) {
+                v = first + std::remainder(v - first, 2.0 * M_PI);
+            }
+        }
+        // The loop's 10th to 90th percentile (a line strays a spacing here and there).
+        std::sort(values.begin(), values.end());
+        const double low = values[values.size() / 10];
+        const double high = values[values.size() - 1 - values.size() / 10];
+        if (!((high - low) * scale <= flat)) {
+            return TopoDS_Face();
+        }
+        at[l] = values[values.size() / 2];
+    }
+    double v0 = std::min(at[0], at[1]);
+    double v1 = std::max(at[0], at[1]);
+    if (s.kind == SurfaceKind::Torus) {
+        // The arc of the tube between the two circles that holds the points.
+        v0 = std::fmod(v0 + 2.0 * M_PI, 2.0 * M_PI);
+        v1 = std::fmod(v1 + 2.0 * M_PI, 2.0 * M_PI);
+        if (v1 < v0) {
+            std::swap(v0, v1);
+        }
+        std::vector<double> middle;
+        for (Eigen::Index i = 0; i < inside.rows(); i += std::max<Eigen::Index>(1, inside.rows() / 200)) {
+            middle.push_back(acrossParameter(s, inside.row(i).transpose()));
+        }
+        std::nth_element(middle.begin(), middle.begin() + static_cast<std::ptrdiff_t>(middle.size() / 2),
+                         middle.end());
+        const double m = middle[middle.size() / 2];
+        if (!(m >= v0 && m <= v1)) {
+            const double w = v1;
+            v1 = v0 + 2.0 * M_PI;
+            v0 = w;
+        }
+    }
+    BRepBuilderAPI_MakeFace make(surface, 0.0, 2.0 * M_PI, v0, v1, Precision::Confusion());
+    return make.IsDone() ? make.Face() : TopoDS_Face();
 }
 
 /// What BRepCheck finds wrong with `shape` or its edges, wires and vertices: the first few
@@ -283,6 +454,27 @@ Handle(Geom_Surface) makeSurface(const FittedSurface& s)
         }
         return new Geom_CylindricalSurface(frame, s.radius);
     }
+    case SurfaceKind::Cone:
+    case SurfaceKind::Torus: {
+        gp_Ax3 frame(point(s.origin), direction(s.axis));
+        const Eigen::Vector3d seam = s.seam - s.seam.dot(s.axis.normalized()) * s.axis.normalized();
+        if (seam.norm() > 1e-9 * std::max(1.0, s.seam.norm())) {
+            frame.SetXDirection(direction(seam));
+        }
+        if (s.kind == SurfaceKind::Cone) {
+            if (!(s.radius > 0.0) || !(std::abs(s.halfAngle) > 1e-9) ||
+                !(std::abs(s.halfAngle) < M_PI / 2.0 - 1e-9)) {
+                throw std::invalid_argument("a cone of radius " + std::to_string(s.radius) +
+                                            " and half angle " + std::to_string(s.halfAngle));
+            }
+            return new Geom_ConicalSurface(frame, s.halfAngle, s.radius);
+        }
+        if (!(s.radius > 0.0) || !(s.minorRadius > 0.0)) {
+            throw std::invalid_argument("a torus of radii " + std::to_string(s.radius) + " and " +
+                                        std::to_string(s.minorRadius));
+        }
+        return new Geom_ToroidalSurface(frame, s.radius, s.minorRadius);
+    }
     case SurfaceKind::BSpline:
         return heightField(s);
     }
@@ -327,9 +519,16 @@ PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& res
                     points.row(i) = P.row(found->second[static_cast<size_t>(i)]);
                 }
                 pf.surface = fitSurface(points, spacing, noise, options.fit);
-                placeSeam(pf.surface, points, border, network);
-                pf.face = trimmedFace(makeSurface(pf.surface), wires.wires, points,
-                                      0.01 * spacing, sewing);
+                const bool wraps = placeSeam(pf.surface, points, border, network);
+                const Handle(Geom_Surface) surface = makeSurface(pf.surface);
+                if (wraps) {
+                    // The lines stray up to two spacings or so from the circle they follow.
+                    pf.face = revolutionBand(pf.surface, surface, border, network, points,
+                                             std::max(3.0 * spacing, 4.0 * pf.surface.tolerance));
+                }
+                if (pf.face.IsNull()) {
+                    pf.face = trimmedFace(surface, wires.wires, points, 0.01 * spacing, sewing);
+                }
                 const std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
                 if (!check.empty()) {
                     pf.problem = name + ": OpenCASCADE made no valid face of its " +

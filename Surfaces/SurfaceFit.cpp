@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -204,6 +205,93 @@ FittedSurface fitHeightField(const PointMatrix& P, double spacing, const Surface
     return s;
 }
 
+/// The PCA normals of the points over their 12 nearest.
+NormalMatrix patchNormals(const PointMatrix& P)
+{
+    NeighbourOptions no;
+    no.k = static_cast<int>(std::min<Eigen::Index>(12, P.rows() - 1));
+    return pcaNormals(P, nearestNeighbours(P, no)).normals;
+}
+
+/// The axis every normal line meets best: a line (point, unit direction) with Pluecker
+/// coordinates (a, b = point x a) meets the normal line through p along n when
+/// a . (p x n) + b . n = 0; the least squares with |a| = 1 is the generalised eigenproblem
+/// M x = lambda D x, D = diag(1, 1, 1, 0, 0, 0), solved through the Schur complement in b.
+/// False when the normals do not fix an axis (a plane's, or a sphere's, all meeting at one
+/// point).
+bool revolutionAxis(const PointMatrix& P, const NormalMatrix& N, Eigen::Vector3d& point,
+                    Eigen::Vector3d& axis)
+{
+    Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
+    const Eigen::Vector3d c0 = centroidOf(P);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const Eigen::Vector3d p = P.row(i).transpose() - c0;
+        const Eigen::Vector3d n = N.row(i).transpose();
+        Eigen::Matrix<double, 6, 1> row;
+        row << p.cross(n), n;
+        M += row * row.transpose();
+    }
+    const Eigen::Matrix3d A = M.topLeftCorner<3, 3>();
+    const Eigen::Matrix3d B = M.topRightCorner<3, 3>();
+    const Eigen::Matrix3d C = M.bottomRightCorner<3, 3>();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> cSolver(C);
+    if (!(cSolver.eigenvalues()[0] > 1e-9 * std::max(1.0, cSolver.eigenvalues()[2]))) {
+        return false;
+    }
+    // Minimising over b for a fixed a: b = -C^-1 B^T a, leaving a^T (A - B C^-1 B^T) a.
+    const Eigen::Matrix3d S = A - B * C.ldlt().solve(B.transpose());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(S);
+    const Eigen::Vector3d a = solver.eigenvectors().col(0);
+    const Eigen::Vector3d b = -C.ldlt().solve(B.transpose() * a);
+    // A sphere's normals all meet at its centre: any axis through it fits as well.
+    if (!(solver.eigenvalues()[1] > 4.0 * solver.eigenvalues()[0])) {
+        return false;
+    }
+    axis = a.normalized();
+    point = c0 + a.cross(b) / a.squaredNorm();
+    return true;
+}
+
+/// The axis tilted by (q[0], q[1]) in the frame (e1, e2) of a0 and moved by (q[2], q[3]).
+struct AxisParameters
+{
+    Eigen::Vector3d a0;
+    Eigen::Vector3d e1;
+    Eigen::Vector3d e2;
+    Eigen::Vector3d p0;
+    Eigen::Vector3d axis(const Eigen::VectorXd& q) const
+    {
+        return (a0 + q[0] * e1 + q[1] * e2).normalized();
+    }
+    Eigen::Vector3d point(const Eigen::VectorXd& q) const { return p0 + q[2] * e1 + q[3] * e2; }
+};
+
+AxisParameters axisParameters(const Eigen::Vector3d& point, const Eigen::Vector3d& axis)
+{
+    AxisParameters ap;
+    ap.a0 = axis;
+    frameOf(axis, ap.e1, ap.e2);
+    ap.p0 = point;
+    return ap;
+}
+
+/// A point's height along the axis and distance from it.
+Eigen::Vector2d meridian(const Eigen::Vector3d& x, const Eigen::Vector3d& point,
+                         const Eigen::Vector3d& axis)
+{
+    const Eigen::Vector3d d = x - point;
+    const double h = d.dot(axis);
+    return Eigen::Vector2d(h, (d - h * axis).norm());
+}
+
+FittedSurface failedFit(SurfaceKind kind)
+{
+    FittedSurface s;
+    s.kind = kind;
+    s.rmsDeviation = s.maxDeviation = std::numeric_limits<double>::infinity();
+    return s;
+}
+
 } // namespace
 
 const char* surfaceKindName(SurfaceKind kind)
@@ -215,6 +303,10 @@ const char* surfaceKindName(SurfaceKind kind)
         return "sphere";
     case SurfaceKind::Cylinder:
         return "cylinder";
+    case SurfaceKind::Cone:
+        return "cone";
+    case SurfaceKind::Torus:
+        return "torus";
     case SurfaceKind::BSpline:
         return "bspline";
     }
@@ -231,6 +323,18 @@ double surfaceDistance(const FittedSurface& s, const Eigen::Vector3d& x)
     case SurfaceKind::Cylinder: {
         const Eigen::Vector3d d = x - s.origin;
         return std::abs((d - d.dot(s.axis) * s.axis).norm() - s.radius);
+    }
+    case SurfaceKind::Cone: {
+        const Eigen::Vector3d d = x - s.origin;
+        const double h = d.dot(s.axis);
+        const double rho = (d - h * s.axis).norm();
+        return std::abs((rho - (s.radius + h * std::tan(s.halfAngle))) * std::cos(s.halfAngle));
+    }
+    case SurfaceKind::Torus: {
+        const Eigen::Vector3d d = x - s.origin;
+        const double h = d.dot(s.axis);
+        const double rho = (d - h * s.axis).norm();
+        return std::abs(std::hypot(rho - s.radius, h) - s.minorRadius);
     }
     case SurfaceKind::BSpline: {
         const Eigen::Vector3d d = x - s.origin;
@@ -337,6 +441,103 @@ FittedSurface fitCylinder(const PointMatrix& P)
     return s;
 }
 
+FittedSurface fitCone(const PointMatrix& P)
+{
+    Eigen::Vector3d point;
+    Eigen::Vector3d axis;
+    if (!revolutionAxis(P, patchNormals(P), point, axis)) {
+        return failedFit(SurfaceKind::Cone);
+    }
+    // The profile: rho = r0 + k h, a line in the half-plane (total least squares).
+    const Eigen::Index n = P.rows();
+    Eigen::MatrixXd m(n, 2);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        m.row(i) = meridian(P.row(i).transpose(), point, axis).transpose();
+    }
+    const Eigen::RowVector2d mean = m.colwise().mean();
+    const Eigen::MatrixXd centred = m.rowwise() - mean;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> line(centred.transpose() * centred);
+    const Eigen::Vector2d along = line.eigenvectors().col(1);
+    if (std::abs(along.x()) < 1e-6) {
+        return failedFit(SurfaceKind::Cone);
+    }
+    const double k0 = along.y() / along.x();
+    const double r00 = mean.y() - k0 * mean.x();
+    const AxisParameters ap = axisParameters(point, axis);
+    Eigen::VectorXd x(6);
+    x << 0.0, 0.0, 0.0, 0.0, r00, k0;
+    x = refine(x, static_cast<int>(n), [&P, ap](const Eigen::VectorXd& q, Eigen::VectorXd& f) {
+        const Eigen::Vector3d a = ap.axis(q);
+        const Eigen::Vector3d p = ap.point(q);
+        const double c = 1.0 / std::sqrt(1.0 + q[5] * q[5]);
+        for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            const Eigen::Vector2d hr = meridian(P.row(i).transpose(), p, a);
+            f[i] = (hr.y() - (q[4] + q[5] * hr.x())) * c;
+        }
+    });
+    FittedSurface s;
+    s.kind = SurfaceKind::Cone;
+    s.axis = ap.axis(x);
+    const Eigen::Vector3d p = ap.point(x);
+    // The reference point: the axis point level with the points' centroid.
+    const double h = (centroidOf(P) - p).dot(s.axis);
+    s.origin = p + h * s.axis;
+    s.radius = x[4] + x[5] * h;
+    s.halfAngle = std::atan(x[5]);
+    if (!(s.radius > 0.0)) {
+        return failedFit(SurfaceKind::Cone);
+    }
+    measure(s, P);
+    return s;
+}
+
+FittedSurface fitTorus(const PointMatrix& P)
+{
+    Eigen::Vector3d point;
+    Eigen::Vector3d axis;
+    if (!revolutionAxis(P, patchNormals(P), point, axis)) {
+        return failedFit(SurfaceKind::Torus);
+    }
+    // The profile: a circle about (h0, R) of radius r in the half-plane (algebraic).
+    const Eigen::Index n = P.rows();
+    Eigen::MatrixXd A(n, 3);
+    Eigen::VectorXd b(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Vector2d hr = meridian(P.row(i).transpose(), point, axis);
+        A.row(i) << hr.x(), hr.y(), 1.0;
+        b[i] = -hr.squaredNorm();
+    }
+    const Eigen::Vector3d sol = A.colPivHouseholderQr().solve(b);
+    const double h0 = -0.5 * sol[0];
+    const double major = -0.5 * sol[1];
+    const double minor = std::sqrt(std::max(h0 * h0 + major * major - sol[2], 0.0));
+    if (!(major > 0.0) || !(minor > 0.0)) {
+        return failedFit(SurfaceKind::Torus);
+    }
+    const AxisParameters ap = axisParameters(point + h0 * axis, axis);
+    Eigen::VectorXd x(7);
+    x << 0.0, 0.0, 0.0, 0.0, 0.0, major, minor;
+    x = refine(x, static_cast<int>(n), [&P, ap](const Eigen::VectorXd& q, Eigen::VectorXd& f) {
+        const Eigen::Vector3d a = ap.axis(q);
+        const Eigen::Vector3d c = ap.point(q) + q[4] * a;
+        for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            const Eigen::Vector2d hr = meridian(P.row(i).transpose(), c, a);
+            f[i] = std::hypot(hr.y() - q[5], hr.x()) - q[6];
+        }
+    });
+    FittedSurface s;
+    s.kind = SurfaceKind::Torus;
+    s.axis = ap.axis(x);
+    s.origin = ap.point(x) + x[4] * s.axis;
+    s.radius = x[5];
+    s.minorRadius = std::abs(x[6]);
+    if (!(s.radius > 0.0) || !(s.minorRadius > 0.0)) {
+        return failedFit(SurfaceKind::Torus);
+    }
+    measure(s, P);
+    return s;
+}
+
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
                          const SurfaceFitOptions& options)
 {
@@ -366,20 +567,27 @@ FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
     if (plane.rmsDeviation <= tolerance) {
         return plane;
     }
-    // Of the sphere and the cylinder within the tolerance, the closer.
-    const FittedSurface* best = nullptr;
-    const FittedSurface candidates[2] = {fitSphere(P), fitCylinder(P)};
+    // Of the sphere, cylinder, cone and torus within the tolerance, the first (the fewest
+    // parameters) whose deviation is within 1.5 times the least: a cylinder is also a cone of
+    // angle near 0 and a torus of a large tube, closer by a hair.
+    const FittedSurface candidates[4] = {fitSphere(P), fitCylinder(P), fitCone(P), fitTorus(P)};
+    auto accepted = [&](const FittedSurface& s) {
+        return s.rmsDeviation <= tolerance && s.radius > 0.0 &&
+               s.radius <= options.maxRadiusRatio * extent &&
+               (s.kind != SurfaceKind::Torus || s.minorRadius <= options.maxRadiusRatio * extent);
+    };
+    double least = std::numeric_limits<double>::infinity();
     for (const FittedSurface& s : candidates) {
-        if (s.rmsDeviation <= tolerance && s.radius > 0.0 &&
-            s.radius <= options.maxRadiusRatio * extent &&
-            (best == nullptr || s.rmsDeviation < best->rmsDeviation)) {
-            best = &s;
+        if (accepted(s)) {
+            least = std::min(least, s.rmsDeviation);
         }
     }
-    if (best != nullptr) {
-        FittedSurface s = *best;
-        s.tolerance = tolerance;
-        return s;
+    for (const FittedSurface& s : candidates) {
+        if (accepted(s) && s.rmsDeviation <= 1.5 * least) {
+            FittedSurface out = s;
+            out.tolerance = tolerance;
+            return out;
+        }
     }
     FittedSurface field = fitHeightField(P, spacing, options);
     measure(field, P);

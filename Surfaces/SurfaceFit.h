@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The surface of one patch (issue 21): a plane, sphere or cylinder where the patch's points fit
-// one within a noise-aware tolerance (CAD parts are mostly such faces), else a cubic B-spline
+// The surface of one patch (issue 21): a plane, sphere, cylinder, cone or torus where the patch's
+// points fit one within a noise-aware tolerance (CAD parts are mostly such faces), else a cubic B-spline
 // height field over the patch's plane. Plain data and Eigen: the OpenCASCADE surfaces are made
 // from it in PatchSurfaces.h. Design: docs/design/surfaces.md.
 #pragma once
@@ -19,10 +19,12 @@ enum class SurfaceKind
     Plane,
     Sphere,
     Cylinder,
+    Cone,
+    Torus,
     BSpline,
 };
 
-/// "plane", "sphere", "cylinder", "bspline".
+/// "plane", "sphere", "cylinder", "cone", "torus", "bspline".
 const char* surfaceKindName(SurfaceKind kind);
 
 struct FittedSurface
@@ -33,9 +35,16 @@ struct FittedSurface
     /// BSpline: the origin and unit normal of the plane it is a height field over.
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    /// Sphere and Cylinder: the radius.
+    /// Sphere, Cylinder: the radius. Cone: the radius at `origin` (a point on the axis), growing
+    /// by tan(halfAngle) per unit along `axis`. Torus: the major radius (centre to the tube's
+    /// centre line) about `origin`, the centre.
     double radius = 0.0;
-    /// Sphere and Cylinder: where the parametrisation starts (its seam), a direction from the
+    /// Cone: radians, the angle between the axis and the cone's lines (negative: narrowing
+    /// along `axis`).
+    double halfAngle = 0.0;
+    /// Torus: the tube's radius.
+    double minorRadius = 0.0;
+    /// Sphere, Cylinder, Cone, Torus: where the parametrisation starts (its seam), a direction from the
     /// axis; zero: any. fitPatchSurfaces() puts the seam through a vertex of the border.
     Eigen::Vector3d seam = Eigen::Vector3d::Zero();
     /// BSpline: the height h(u, v) along `axis` over the plane, u along `uDirection` and v along
@@ -77,8 +86,9 @@ struct SurfaceFitOptions
 
 /// The surface of a patch: points P  #P by 3 (at least 6, not all on a line), `spacing` the
 /// cloud's sampling spacing, `noise` the scatter of the points about their surface (model
-/// units; 0 when unknown). Tries plane, sphere, cylinder in that order and returns the first
-/// whose RMS deviation is within the tolerance, else the B-spline height field. Throws
+/// units; 0 when unknown). A plane when its RMS deviation is within the tolerance; else of the
+/// sphere, cylinder, cone and torus within it, the first (the fewest parameters) whose RMS
+/// deviation is within 1.5 times the least of theirs; else the B-spline height field. Throws
 /// std::invalid_argument naming the problem for too few points, non-finite input or a
 /// non-positive spacing.
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise = 0.0,
@@ -88,9 +98,16 @@ FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise = 0.
 /// field's vertical distance).
 double surfaceDistance(const FittedSurface& surface, const Eigen::Vector3d& x);
 
-/// Each kind fitted alone (no B-spline), for tests and the report: plane, sphere, cylinder.
+/// Each kind fitted alone (no B-spline), for tests and the report. The surfaces of revolution
+/// start from the axis the points' normals (PCA over their 12 nearest) meet best: every normal
+/// of such a surface meets its axis (Pottmann and Randrup 1998), a linear condition on the
+/// axis's Pluecker coordinates; their profile in the half-plane through the axis is then a
+/// line (cylinder, cone) or a circle (torus); all is refined by Levenberg-Marquardt on the
+/// points' distances.
 FittedSurface fitPlane(const PointMatrix& P);
 FittedSurface fitSphere(const PointMatrix& P);
 FittedSurface fitCylinder(const PointMatrix& P);
+FittedSurface fitCone(const PointMatrix& P);
+FittedSurface fitTorus(const PointMatrix& P);
 
 } // namespace featurelines::surfaces

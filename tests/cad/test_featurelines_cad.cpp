@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // featurelines-cad run as a user would, on a sampled cube: its BREP and STEP files read back
 // with OpenCASCADE hold the cube's twelve straight edges (the BREP on eight shared corners);
-// a wrong call exits with 2 and a message.
+// with --surfaces the STEP holds one valid solid of six faces and the cube's volume; a wrong
+// call exits with 2 and a message.
 #include <gtest/gtest.h>
 
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +135,31 @@ TEST_F(FeatureLinesCad, AStepOfACubeReadsBackWithTwelveLines)
     expectCubeEdges(shape);
 }
 
+TEST_F(FeatureLinesCad, SurfacesOfACubeAreAStepSolidOfSixPlanes)
+{
+    // --surfaces: the patches' planes trimmed by the lines and sewn, read back from STEP as one
+    // valid solid of the cube's volume.
+    const fs::path out = *dir / "cube-surfaces.step";
+    ASSERT_EQ(runTool("extract " + (*dir / "cube.xyz").string() + " -o " + out.string() +
+                          " --surfaces",
+                      *dir / "surfaces.log"),
+              0)
+        << textOf(*dir / "surfaces.log");
+    STEPControl_Reader reader;
+    ASSERT_EQ(reader.ReadFile(out.string().c_str()), IFSelect_RetDone);
+    ASSERT_GT(reader.TransferRoots(), 0);
+    const TopoDS_Shape shape = reader.OneShape();
+    EXPECT_EQ(countOf(shape, TopAbs_SOLID), 1);
+    EXPECT_EQ(countOf(shape, TopAbs_FACE), 6);
+    EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(shape, props);
+    EXPECT_NEAR(std::abs(props.Mass()), edge * edge * edge, 0.01 * edge * edge * edge);
+    EXPECT_NE(textOf(*dir / "surfaces.log").find("6 of 6 patches got a face (6 planes"),
+              std::string::npos)
+        << textOf(*dir / "surfaces.log");
+}
+
 TEST_F(FeatureLinesCad, AWrongCallExitsWithTwoAndSaysWhy)
 {
     const fs::path log = *dir / "usage.log";
@@ -144,6 +174,12 @@ TEST_F(FeatureLinesCad, AWrongCallExitsWithTwoAndSaysWhy)
                       log),
               2);
     EXPECT_NE(textOf(log).find("--borders needs a .brep output"), std::string::npos);
+    EXPECT_EQ(runTool("extract " + (*dir / "cube.xyz").string() + " -o " +
+                          (*dir / "cube.brep").string() + " --borders --surfaces",
+                      log),
+              2);
+    EXPECT_NE(textOf(log).find("--borders and --surfaces write different shapes"),
+              std::string::npos);
     EXPECT_EQ(
         runTool("extract " + (*dir / "missing.xyz").string() + " -o " + (*dir / "x.brep").string(),
                 log),
