@@ -39,6 +39,7 @@
 #include "RandomBenchmark.h"
 #include "ScanSampling.h"
 #include "ShapeSampling.h"
+#include "SurfaceScore.h"
 #include "VcmBaseline.h"
 
 using featurelines::PointMatrix;
@@ -55,6 +56,7 @@ featurelines::ExtractionOptions extractionOptions;
 /// network and its patches' borders.
 struct FeatureLinesRun
 {
+    featurelines::ExtractionResult result;
     std::vector<TypedPolyline> lines;
     featurelines::CurveNetwork network;
     std::vector<featurelines::PatchBorder> borders;
@@ -76,6 +78,7 @@ std::optional<FeatureLinesRun> runFeatureLines(const PointMatrix& cloud)
     }
     run.network = featurelines::fitCurveNetwork(result);
     run.borders = featurelines::patchBorders(run.network, result, cloud);
+    run.result = result;
     return run;
 }
 
@@ -159,6 +162,8 @@ struct Arguments
     bool markdown = false;
     /// Run the per-point baselines beside the extraction.
     bool baselines = true;
+    /// Fit, sew and score the patch surfaces too (issue 21).
+    bool surfaces = false;
 };
 
 const char* usage =
@@ -191,7 +196,9 @@ const char* usage =
     "  --max-scale S           coarsest curvature scale of the extraction, x spacing\n"
     "                          (default 8; 1: the cloud's own sampling only)\n"
     "  --no-line-placement     leave the smooth lines where the curvature's levels put\n"
-    "                          them (no fit of the curvature step)\n";
+    "                          them (no fit of the curvature step)\n"
+    "  --surfaces              also fit the patches' surfaces, sew them and measure them\n"
+    "                          against the true B-rep (a table of its own)\n";
 
 /// Each point of `cloud` kept with probability `share` (seeded); all of them at share 1.
 SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
@@ -274,6 +281,8 @@ Arguments parseArguments(int argc, char** argv)
             extractionOptions.sharp.boundary.minGapAngle = parseNumber(value(), opt);
         } else if (opt == "--max-scale") {
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
+        } else if (opt == "--surfaces") {
+            a.surfaces = true;
         } else if (opt == "--no-line-placement") {
             extractionOptions.smooth.placeCoarseLines = false;
             extractionOptions.smooth.placeOwnScaleLines = false;
@@ -591,8 +600,9 @@ struct Row
     /// For line detectors: F1 at a tolerance of one spacing, and LineQuality.
     LineScore scoreAtOneSpacing;
     LineQuality quality;
-    /// For the extraction: its fitted curves.
+    /// For the extraction: its fitted curves, and with --surfaces its sewn patch surfaces.
     std::optional<CurveQuality> curves;
+    std::optional<SurfaceQuality> surfaces;
 };
 
 void printTable(const std::vector<std::string>& header,
@@ -794,6 +804,24 @@ Row featureLinesRow(const std::string& name, const std::string& noise, const Fea
     return row;
 }
 
+/// --surfaces: the run's patch surfaces fitted, sewn and measured against the true shape.
+SurfaceQuality surfaceRow(const FeatureLinesRun& run, const PointMatrix& cloud,
+                          const TopoDS_Shape& truth, double spacing)
+{
+    const auto start = std::chrono::steady_clock::now();
+    SurfaceQuality q;
+    try {
+        const featurelines::surfaces::PatchSurfaces fitted =
+            featurelines::surfaces::surfacesOfExtraction(cloud, run.result);
+        const double fitSeconds = seconds(start);
+        q = measureSurfaces(fitted, truth, cloud, spacing);
+        q.seconds = fitSeconds;
+    } catch (const std::exception& e) {
+        std::cerr << "surfaces not measured: " << e.what() << "\n";
+    }
+    return q;
+}
+
 /// The per-point baselines on one cloud: a row at each fixed threshold, and the sweeps over
 /// the measured parts.
 void runBaselines(const std::string& name, const std::string& noise, const std::string& group,
@@ -863,6 +891,9 @@ void measurePart(const CadShape& part, const std::string& group, unsigned seed,
         Row row = run ? featureLinesRow(part.name, noise, *run, s)
                       : Row(part.name, noise, "featurelines");
         row.seconds = extractionSeconds;
+        if (args.surfaces && run) {
+            row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing);
+        }
         row.group = group;
         results.rows.push_back(row);
         // Lines of an external run, when given.
@@ -1010,6 +1041,64 @@ void printCurveQuality(const Results& results, bool markdown)
                table, markdown);
 }
 
+/// --surfaces: per part, the patch faces by kind, the sewn shape, its distances to the true
+/// B-rep and the true faces recovered with their kind; then the means.
+void printSurfaceQuality(const Results& results, bool markdown)
+{
+    std::vector<std::vector<std::string>> table;
+    int parts = 0;
+    int solids = 0;
+    int trueFaces = 0;
+    int rightKind = 0;
+    std::vector<double> to;
+    std::vector<double> to95;
+    std::vector<double> from;
+    std::vector<double> from95;
+    for (const Row& r : results.rows) {
+        if (!r.surfaces) {
+            continue;
+        }
+        const SurfaceQuality& q = *r.surfaces;
+        ++parts;
+        solids += q.solid && q.valid ? 1 : 0;
+        trueFaces += q.trueFaces;
+        rightKind += q.rightKind;
+        for (auto [value, list] : {std::pair{q.toTruthMean, &to}, std::pair{q.toTruthP95, &to95},
+                                   std::pair{q.fromTruthMean, &from},
+                                   std::pair{q.fromTruthP95, &from95}}) {
+            if (std::isfinite(value)) {
+                list->push_back(value);
+            }
+        }
+        table.push_back(
+            {r.shape, r.noise, std::to_string(q.faces) + "/" + std::to_string(q.patches),
+             std::to_string(q.kinds[0]), std::to_string(q.kinds[1]), std::to_string(q.kinds[2]),
+             std::to_string(q.kinds[3]), std::to_string(q.kinds[4]), std::to_string(q.kinds[5]),
+             q.solid ? (q.valid ? "valid solid" : "invalid solid") : (q.faces ? "open" : "-"),
+             formatNumber(q.toTruthMean, 2), formatNumber(q.toTruthP95, 2),
+             formatNumber(q.fromTruthMean, 2), formatNumber(q.fromTruthP95, 2),
+             std::to_string(q.rightKind) + "/" + std::to_string(q.trueFaces),
+             formatNumber(q.seconds, 1)});
+    }
+    if (table.empty()) {
+        return;
+    }
+    auto mean = [](const std::vector<double>& v) { return v.empty() ? NAN : meanOf(v); };
+    table.push_back({"mean", "", "", "", "", "", "", "", "",
+                     std::to_string(solids) + " of " + std::to_string(parts) + " valid solids",
+                     formatNumber(mean(to), 2), formatNumber(mean(to95), 2),
+                     formatNumber(mean(from), 2), formatNumber(mean(from95), 2),
+                     trueFaces ? formatNumber(double(rightKind) / trueFaces) : "-", ""});
+    if (!markdown) {
+        std::cout << "Patch surfaces (distances in spacings: from the fitted faces to the true "
+                     "B-rep, and from the true faces the cloud saw to the fitted ones)\n";
+    }
+    printTable({"part", "noise", "faces/patches", "plane", "sphere", "cylinder", "cone", "torus",
+                "bspline", "shape", "to truth mean", "to truth p95", "from truth mean",
+                "from truth p95", "true faces of their kind", "fit s"},
+               table, markdown);
+}
+
 void printSweeps(const Results& results, bool markdown)
 {
     std::vector<std::vector<std::string>> sweepRows;
@@ -1116,6 +1205,9 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     Row row = featureLinesRow(name, noise, *run, s);
     row.seconds = seconds(start);
     row.group = record.group;
+    if (args.surfaces) {
+        row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing);
+    }
     results.rows.push_back(row);
     record.seconds = row.seconds;
     record.score = row.score;
@@ -1154,6 +1246,7 @@ int runRandom(const Arguments& args)
     }
     printLineQuality(results, args.markdown);
     printCurveQuality(results, args.markdown);
+    printSurfaceQuality(results, args.markdown);
     for (const TextTable& table : randomAggregateTables(records)) {
         printTextTable(table, args.markdown);
     }
@@ -1205,6 +1298,7 @@ int run(const Arguments& args)
     printScores(results, args.markdown);
     printLineQuality(results, args.markdown);
     printCurveQuality(results, args.markdown);
+    printSurfaceQuality(results, args.markdown);
     printSweeps(results, args.markdown);
     if (!args.demoCloud.empty()) {
         writeDemoCloud(args);

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// How the fitted patch surfaces (Surfaces/PatchSurfaces.h) sit on the true B-rep (issue 21):
+// distances from the sewn shape to the truth and back, the true faces recovered with their
+// kind, and whether the faces close into a valid solid.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <array>
+
+#include "PatchSurfaces.h"
+
+namespace featurelines::bench {
+
+struct SurfaceQuality
+{
+    /// Patches handed in, and those that got a face; faces of each SurfaceKind.
+    int patches = 0;
+    int faces = 0;
+    std::array<int, 6> kinds{};
+    /// The faces closed into one solid, and BRepCheck finds it valid.
+    bool solid = false;
+    bool valid = false;
+    /// Spacings: from points on the fitted faces to the true shape (mean, 95th percentile),
+    /// and from points on the true faces that the cloud saw to the fitted faces. NaN without
+    /// faces.
+    double toTruthMean = 0.0;
+    double toTruthP95 = 0.0;
+    double fromTruthMean = 0.0;
+    double fromTruthP95 = 0.0;
+    /// True faces the cloud saw (a point within 2 spacings of their sample), and those whose
+    /// samples lie mostly within a spacing of fitted faces of their own kind (a B-spline, or
+    /// any kind OpenCASCADE does not name, counts as "bspline").
+    int trueFaces = 0;
+    int rightKind = 0;
+    /// Seconds to fit and sew the surfaces.
+    double seconds = 0.0;
+};
+
+/// Scores `surfaces` (fitted to `cloud`, a sampling of `truth`, whose mean spacing is `spacing`)
+/// against the true shape: up to `samples` points each way.
+SurfaceQuality measureSurfaces(const surfaces::PatchSurfaces& surfaces, const TopoDS_Shape& truth,
+                               const PointMatrix& cloud, double spacing, int samples = 400);
+
+} // namespace featurelines::bench
