@@ -4,6 +4,7 @@
 #include "PatchSurfaces.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <GeomLProp_SLProps.hxx>
@@ -243,15 +244,14 @@ TopoDS_Face trimmedFace(const Handle(Geom_Surface)& surface, const std::vector<T
 /// the border (a cylinder's band all round, a sphere beyond a hemisphere), so that the border's
 /// edges need not be cut where the seam crosses them.
 /// Returns whether the points wrap all round (the seam runs through the vertex).
-bool placeSeam(FittedSurface& s, const PointMatrix& points, const PatchBorder& border,
-               const CurveNetwork& network)
+bool placeSeam(FittedSurface& s, const PointMatrix& points, const TopoDS_Wire& outer)
 {
     if (s.kind == SurfaceKind::Plane || s.kind == SurfaceKind::BSpline) {
         return false;
     }
-    const LoopEdge& first = border.loops.front().front();
-    const NetworkEdge& edge = network.edges[static_cast<size_t>(first.edge)];
-    const Eigen::Vector3d vertex = (first.reversed ? edge.curve.end : edge.curve.start) - s.origin;
+    const BRepTools_WireExplorer first(outer);
+    const gp_Pnt v = BRep_Tool::Pnt(first.CurrentVertex());
+    const Eigen::Vector3d vertex = Eigen::Vector3d(v.X(), v.Y(), v.Z()) - s.origin;
     if (s.kind == SurfaceKind::Sphere) {
         // A cap within 80 degrees of its mean direction: the poles at right angles to it, the
         // seam opposite it.
@@ -325,23 +325,29 @@ double acrossParameter(const FittedSurface& s, const Eigen::Vector3d& x)
 /// (ShapeFix_Face leaves such a band with its seam used once). Null when the patch is no such
 /// band.
 TopoDS_Face revolutionBand(const FittedSurface& s, const Handle(Geom_Surface)& surface,
-                           const PatchBorder& border, const CurveNetwork& network,
-                           const PointMatrix& inside, double flat)
+                           const std::vector<TopoDS_Wire>& wires, const PointMatrix& inside,
+                           double spacing, double flat)
 {
     const bool revolution = s.kind == SurfaceKind::Cylinder || s.kind == SurfaceKind::Cone ||
                             s.kind == SurfaceKind::Torus;
-    if (!revolution || border.loops.size() != 2) {
+    if (!revolution || wires.size() != 2) {
         return TopoDS_Face();
     }
     // Lengths across the circles per unit of the parameter.
     const double scale = s.kind == SurfaceKind::Torus ? s.minorRadius : 1.0;
     double at[2];
     for (int l = 0; l < 2; ++l) {
+        // The loop's edges sampled about a spacing apart.
         std::vector<double> values;
-        for (const LoopEdge& le : border.loops[static_cast<size_t>(l)]) {
-            const PointMatrix& points = network.edges[static_cast<size_t>(le.edge)].points;
-            for (Eigen::Index i = 0; i < points.rows(); ++i) {
-                values.push_back(acrossParameter(s, points.row(i).transpose()));
+        for (TopExp_Explorer e(wires[static_cast<size_t>(l)], TopAbs_EDGE); e.More(); e.Next()) {
+            BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+            const double t0 = curve.FirstParameter();
+            const double t1 = curve.LastParameter();
+            const double length = GCPnts_AbscissaPoint::Length(curve);
+            const int n = std::max(4, static_cast<int>(length / spacing));
+            for (int i = 0; i <= n; ++i) {
+                const gp_Pnt p = curve.Value(t0 + (t1 - t0) * i / n);
+                values.push_back(acrossParameter(s, Eigen::Vector3d(p.X(), p.Y(), p.Z())));
             }
         }
         if (values.empty()) {
@@ -481,74 +487,58 @@ Handle(Geom_Surface) makeSurface(const FittedSurface& s)
     throw std::invalid_argument("an unknown surface kind");
 }
 
-PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& result,
-                               const CurveNetwork& network,
-                               const std::vector<PatchBorder>& borders,
-                               const cad::NetworkShapes& shapes, double noise,
-                               const PatchSurfaceOptions& options)
+PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<TopoDS_Wire>& wires,
+                       double spacing, double noise, const PatchSurfaceOptions& options)
 {
-    if (static_cast<Eigen::Index>(result.patch.size()) != P.rows()) {
-        throw std::invalid_argument("the extraction result has " +
-                                    std::to_string(result.patch.size()) + " patch ids for " +
-                                    std::to_string(P.rows()) + " points");
+    PatchFace pf;
+    pf.patch = patch;
+    pf.points = static_cast<int>(points.rows());
+    const std::string name = "patch " + std::to_string(patch);
+    if (wires.empty()) {
+        pf.problem = name + ": no closed border";
+        return pf;
     }
-    const double spacing = result.spacing;
-    std::map<int, std::vector<Eigen::Index>> rows;
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-        if (result.patch[static_cast<size_t>(i)] >= 0) {
-            rows[result.patch[static_cast<size_t>(i)]].push_back(i);
+    try {
+        pf.surface = fitSurface(points, spacing, noise, options.fit);
+        const bool wraps = placeSeam(pf.surface, points, wires.front());
+        const Handle(Geom_Surface) surface = makeSurface(pf.surface);
+        if (wraps) {
+            // The lines stray up to two spacings or so from the circle they follow.
+            pf.face = revolutionBand(pf.surface, surface, wires, points, spacing,
+                                     std::max(3.0 * spacing, 4.0 * pf.surface.tolerance));
         }
+        if (pf.face.IsNull()) {
+            pf.face = trimmedFace(surface, wires, points, 0.01 * spacing,
+                                  options.sewingTolerance * spacing);
+        }
+        const std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
+        if (!check.empty()) {
+            pf.problem = name + ": OpenCASCADE made no valid face of its " +
+                         surfaceKindName(pf.surface.kind) + " and border (" + check + ")";
+            pf.face.Nullify();
+        }
+    } catch (const std::invalid_argument& e) {
+        pf.problem = name + ": " + e.what();
+    } catch (const Standard_Failure& e) {
+        pf.problem = name + ": OpenCASCADE failed: " + e.GetMessageString();
     }
+    return pf;
+}
+
+PatchSurfaces sewPatchFaces(std::vector<PatchFace> faces, double tolerance)
+{
     PatchSurfaces out;
-    const double sewing = options.sewingTolerance * spacing;
-    BRepBuilderAPI_Sewing sew(sewing);
+    BRepBuilderAPI_Sewing sew(tolerance);
     int added = 0;
-    for (const PatchBorder& border : borders) {
-        PatchFace pf;
-        pf.patch = border.patch;
-        const std::string name = "patch " + std::to_string(border.patch);
-        const auto found = rows.find(border.patch);
-        pf.points = found == rows.end() ? 0 : static_cast<int>(found->second.size());
-        const cad::BorderWires wires = cad::makeBorderWires(border, shapes);
-        if (wires.wires.empty()) {
-            pf.problem = wires.problem;
-        } else {
-            try {
-                PointMatrix points(pf.points, 3);
-                for (int i = 0; i < pf.points; ++i) {
-                    points.row(i) = P.row(found->second[static_cast<size_t>(i)]);
-                }
-                pf.surface = fitSurface(points, spacing, noise, options.fit);
-                const bool wraps = placeSeam(pf.surface, points, border, network);
-                const Handle(Geom_Surface) surface = makeSurface(pf.surface);
-                if (wraps) {
-                    // The lines stray up to two spacings or so from the circle they follow.
-                    pf.face = revolutionBand(pf.surface, surface, border, network, points,
-                                             std::max(3.0 * spacing, 4.0 * pf.surface.tolerance));
-                }
-                if (pf.face.IsNull()) {
-                    pf.face = trimmedFace(surface, wires.wires, points, 0.01 * spacing, sewing);
-                }
-                const std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
-                if (!check.empty()) {
-                    pf.problem = name + ": OpenCASCADE made no valid face of its " +
-                                 surfaceKindName(pf.surface.kind) + " and border (" + check + ")";
-                    pf.face.Nullify();
-                }
-            } catch (const std::invalid_argument& e) {
-                pf.problem = name + ": " + e.what();
-            } catch (const Standard_Failure& e) {
-                pf.problem = name + ": OpenCASCADE failed: " + e.GetMessageString();
-            }
-        }
+    for (PatchFace& pf : faces) {
         if (!pf.face.IsNull()) {
             sew.Add(pf.face);
             ++added;
         } else {
             out.problems.push_back(pf.problem);
         }
-        out.faces.push_back(std::move(pf));
     }
+    out.faces = std::move(faces);
     if (added == 0) {
         return out;
     }
@@ -569,9 +559,9 @@ PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& res
         }
         out.shape = sewn;
         out.valid = BRepCheck_Analyzer(out.shape).IsValid();
-        ShapeAnalysis_ShapeTolerance tolerance;
-        out.tolerance = std::max(tolerance.Tolerance(out.shape, 1, TopAbs_EDGE),
-                                 tolerance.Tolerance(out.shape, 1, TopAbs_VERTEX));
+        ShapeAnalysis_ShapeTolerance tolerances;
+        out.tolerance = std::max(tolerances.Tolerance(out.shape, 1, TopAbs_EDGE),
+                                 tolerances.Tolerance(out.shape, 1, TopAbs_VERTEX));
         if (out.solid && !out.valid) {
             out.problems.push_back("the sewn solid is not valid (BRepCheck_Analyzer)");
         }
@@ -579,6 +569,46 @@ PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& res
         out.problems.push_back(std::string("sewing failed: ") + e.GetMessageString());
     }
     return out;
+}
+
+PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& result,
+                               const std::vector<PatchBorder>& borders,
+                               const cad::NetworkShapes& shapes, double noise,
+                               const PatchSurfaceOptions& options)
+{
+    if (static_cast<Eigen::Index>(result.patch.size()) != P.rows()) {
+        throw std::invalid_argument("the extraction result has " +
+                                    std::to_string(result.patch.size()) + " patch ids for " +
+                                    std::to_string(P.rows()) + " points");
+    }
+    std::map<int, std::vector<Eigen::Index>> rows;
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        if (result.patch[static_cast<size_t>(i)] >= 0) {
+            rows[result.patch[static_cast<size_t>(i)]].push_back(i);
+        }
+    }
+    std::vector<PatchFace> faces;
+    for (const PatchBorder& border : borders) {
+        const auto found = rows.find(border.patch);
+        const Eigen::Index n =
+            found == rows.end() ? 0 : static_cast<Eigen::Index>(found->second.size());
+        PointMatrix points(n, 3);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            points.row(i) = P.row(found->second[static_cast<size_t>(i)]);
+        }
+        const cad::BorderWires wires = cad::makeBorderWires(border, shapes);
+        if (wires.wires.empty()) {
+            PatchFace pf;
+            pf.patch = border.patch;
+            pf.points = static_cast<int>(n);
+            pf.problem = wires.problem;
+            faces.push_back(std::move(pf));
+            continue;
+        }
+        faces.push_back(fitPatchFace(border.patch, points, wires.wires, result.spacing, noise,
+                                     options));
+    }
+    return sewPatchFaces(std::move(faces), options.sewingTolerance * result.spacing);
 }
 
 double medianNoise(const ExtractionResult& result)
@@ -604,7 +634,7 @@ PatchSurfaces surfacesOfExtraction(const PointMatrix& P, const ExtractionResult&
     const cad::NetworkShapes shapes =
         cad::makeNetworkShapes(network, gp_Trsf(), 2.0 * result.spacing);
     const std::vector<PatchBorder> borders = patchBorders(network, result, P);
-    return fitPatchSurfaces(P, result, network, borders, shapes, medianNoise(result), options);
+    return fitPatchSurfaces(P, result, borders, shapes, medianNoise(result), options);
 }
 
 } // namespace featurelines::surfaces

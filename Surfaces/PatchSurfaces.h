@@ -57,14 +57,25 @@ struct PatchSurfaces
 /// with the same poles). Throws std::invalid_argument for a surface that makes none.
 Handle(Geom_Surface) makeSurface(const FittedSurface& surface);
 
-/// The surfaces of the patches of `borders` (patchBorders() of `network`, whose shapes are
-/// `shapes`), each fitted to its
-/// points (rows of P with result.patch equal to its id), trimmed by its border wires, then
-/// sewn. `noise` is the scatter of the points about their surfaces (model units), e.g. the
-/// median RegionReport::noise. A patch whose border is open, whose points make no surface or
-/// whose face OpenCASCADE cannot build is left out and listed in `problems`.
+/// One patch's face: its surface fitted to `points` (at least 6), placed (seam) and trimmed by
+/// its closed border `wires` (the outer first, then the holes; a band all round a cylinder,
+/// cone or torus between two loops on its circles is made on those circles). `spacing` is the
+/// cloud's sampling spacing, `noise` the points' scatter about their surface (model units).
+/// Never throws for a bad patch: the face is then null and `problem` says why.
+PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<TopoDS_Wire>& wires,
+                       double spacing, double noise, const PatchSurfaceOptions& options = {});
+
+/// The faces sewn at `tolerance` (model units) into a shell, a solid where it closes; the faces
+/// without a shape are listed in `problems`.
+PatchSurfaces sewPatchFaces(std::vector<PatchFace> faces, double tolerance);
+
+/// The surfaces of the patches of `borders` (patchBorders() of the network whose shapes are
+/// `shapes`), each fitted to its points (rows of P with result.patch equal to its id) and
+/// trimmed by its border wires (fitPatchFace), then sewn at options.sewingTolerance spacings.
+/// `noise` is the scatter of the points about their surfaces (model units), e.g. medianNoise.
+/// A patch whose border is open, whose points make no surface or whose face OpenCASCADE cannot
+/// build is left out and listed in `problems`.
 PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& result,
-                               const CurveNetwork& network,
                                const std::vector<PatchBorder>& borders,
                                const cad::NetworkShapes& shapes, double noise,
                                const PatchSurfaceOptions& options = {});
