@@ -62,6 +62,7 @@ Module::Module() : Py::ExtensionModule<Module>("FeatureLines")
     addCloudFunctions();
     addExtractionFunctions();
     addThresholdFunctions();
+    addSurfaceFunctions();
     addCacheFunctions();
     initialize("Closed feature lines (sharp edges, fillet borders) from point clouds.");
 }

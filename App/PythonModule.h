@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The Python module FeatureLines: its functions for macros, by concern, each group in a file of
 // its own: clouds (PythonClouds.cpp), extraction (PythonExtraction.cpp), thresholds
-// (PythonThresholds.cpp), the cache and progress (PythonCache.cpp). Keyword parameters of the
+// (PythonThresholds.cpp), surfaces (PythonSurfaces.cpp), the cache and progress
+// (PythonCache.cpp). Keyword parameters of the
 // functions are the document object's property names, mapped onto the core's options by the
 // one table of ExtractionParameters.h.
 #pragma once
@@ -45,6 +46,10 @@ private:
     Py::Object regionLabelsOf(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object regionPatchesOf(const Py::Tuple& args, const Py::Dict& keywords);
     Py::Object repeatedThresholdOf(const Py::Tuple& args, const Py::Dict& keywords);
+
+    // Surfaces: a surface per patch, trimmed by its border, sewn.
+    void addSurfaceFunctions();
+    Py::Object fitSurfaces(const Py::Tuple& args, const Py::Dict& keywords);
 
     // The cache of analyses and the progress observer.
     void addCacheFunctions();

@@ -499,6 +499,9 @@ PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<T
         return pf;
     }
     try {
+        if (noise < 0.0) {
+            noise = estimatePatchNoise(points, spacing);
+        }
         pf.surface = fitSurface(points, spacing, noise, options.fit);
         const bool wraps = placeSeam(pf.surface, points, wires.front());
         const Handle(Geom_Surface) surface = makeSurface(pf.surface);

@@ -60,7 +60,8 @@ Handle(Geom_Surface) makeSurface(const FittedSurface& surface);
 /// One patch's face: its surface fitted to `points` (at least 6), placed (seam) and trimmed by
 /// its closed border `wires` (the outer first, then the holes; a band all round a cylinder,
 /// cone or torus between two loops on its circles is made on those circles). `spacing` is the
-/// cloud's sampling spacing, `noise` the points' scatter about their surface (model units).
+/// cloud's sampling spacing, `noise` the points' scatter about their surface (model units;
+/// negative: estimated from the points, estimatePatchNoise).
 /// Never throws for a bad patch: the face is then null and `problem` says why.
 PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<TopoDS_Wire>& wires,
                        double spacing, double noise, const PatchSurfaceOptions& options = {});

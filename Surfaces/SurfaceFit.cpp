@@ -14,6 +14,7 @@
 
 #include "FeatureLines/neighbourhoods/Neighbours.h"
 #include "FeatureLines/neighbourhoods/Normals.h"
+#include "FeatureLines/smooth/RegionGeometry.h"
 
 namespace featurelines::surfaces {
 
@@ -536,6 +537,18 @@ FittedSurface fitTorus(const PointMatrix& P)
     }
     measure(s, P);
     return s;
+}
+
+double estimatePatchNoise(const PointMatrix& P, double spacing)
+{
+    if (P.rows() < 8 || !(spacing > 0.0)) {
+        return 0.0;
+    }
+    NeighbourOptions no;
+    no.k = static_cast<int>(std::min<Eigen::Index>(16, P.rows() - 1));
+    const Neighbourhoods N = nearestNeighbours(P, no);
+    const NormalEstimate normals = pcaNormals(P, N);
+    return estimateNoise(P, normals.normals, N, spacing, 2000) * spacing / 0.9;
 }
 
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,

@@ -94,6 +94,11 @@ struct SurfaceFitOptions
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise = 0.0,
                          const SurfaceFitOptions& options = {});
 
+/// The scatter of the points about their surface (model units): the core's estimateNoise (the
+/// median distance of a point from the quadric of its 16 nearest, about 0.9 sigma of normal
+/// noise) over at most 2000 of them, divided by 0.9; 0 for fewer than 8 points.
+double estimatePatchNoise(const PointMatrix& P, double spacing);
+
 /// The distance from x to the fitted surface (the B-spline's: along its axis, the height
 /// field's vertical distance).
 double surfaceDistance(const FittedSurface& surface, const Eigen::Vector3d& x);

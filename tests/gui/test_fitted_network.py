@@ -3,9 +3,10 @@
 extraction's Shape is a few tens of fitted edges (lines, arcs, circles, B-splines) on shared
 vertices, drawn by type colour; then FreeCAD's own Surface::Filling is built on one patch's
 closed border wire (its edges picked from the extraction, as a user picks them in Surface >
-Filling) and lies on that patch's points. Screenshots at FreeCAD's default layout (1366 x 768):
-fitted_network (docs/images/gui-fitted-network.png) and patch_filling
-(docs/images/gui-patch-filling.png)."""
+Filling) and lies on that patch's points. Then FeatureLines.fitSurfaces makes the patches' surfaces, sewn into the demo part's solid.
+Screenshots at FreeCAD's default layout (1366 x 768): fitted_network
+(docs/images/gui-fitted-network.png), patch_filling (docs/images/gui-patch-filling.png) and
+surfaces (docs/images/gui-surfaces.png)."""
 
 import os
 import sys
@@ -31,6 +32,7 @@ def setup():
     cloud = doc.addObject("Points::Feature", "Cloud")
     cloud.Points = FeatureLines.readCloud(os.path.join(SAMPLES, "boss_blend.xyz"))
     cloud.Label = "boss_blend"
+    state["cloud"] = cloud
     state["lines"] = FeatureLines.makeExtraction(cloud)
     doc.recompute()
     # The points faint under the lines; the lines' shared vertices drawn as dots.
@@ -92,10 +94,44 @@ def filling():
     g.screenshot("patch_filling")
 
 
+def surfaces():
+    import Part
+
+    import FeatureLines
+
+    lines, doc = state["lines"], state["doc"]
+    if "Filling" in [o.Name for o in doc.Objects]:
+        doc.getObject("Filling").ViewObject.Visibility = False
+    result = FeatureLines.fitSurfaces(lines)
+    kinds = [f["kind"] for f in result["faces"]]
+    g.log("surfaces: %s, solid %s, valid %s, tolerance %.3g"
+          % ({k: kinds.count(k) for k in sorted(set(map(str, kinds)))}, result["solid"],
+             result["valid"], result["tolerance"]))
+    g.check(result["solid"] and result["valid"], "the demo part's faces close into a valid "
+            "solid: %s" % [f["problem"] for f in result["faces"] if f["problem"]])
+    feature = Part.show(result["shape"], "Surfaces")
+    doc.recompute()
+    # Each face coloured by its kind: planes grey-blue, cylinders green, the torus orange.
+    colours = {"plane": (0.62, 0.70, 0.85), "cylinder": (0.55, 0.80, 0.55),
+               "torus": (0.95, 0.65, 0.30), "cone": (0.85, 0.55, 0.85),
+               "sphere": (0.90, 0.85, 0.40), "bspline": (0.85, 0.45, 0.45)}
+    names = {"Plane": "plane", "Cylinder": "cylinder", "Toroid": "torus", "Cone": "cone",
+             "Sphere": "sphere"}
+    by_face = [colours[names.get(type(face.Surface).__name__, "bspline")]
+               for face in feature.Shape.Faces]
+    g.check(sorted(names.get(type(f.Surface).__name__, "bspline") for f in feature.Shape.Faces)
+            == sorted(kinds), "the sewn faces keep their kinds")
+    feature.ViewObject.DiffuseColor = by_face
+    state["cloud"].ViewObject.Visibility = False
+    lines.ViewObject.Visibility = False
+    g.screenshot("surfaces")
+
+
 def build(steps):
     steps.then("the demo part's cloud, its feature lines recomputed", setup)
     steps.then("the fitted network: tens of edges on shared vertices", fitted_network)
     steps.then("a Surface::Filling on a patch's border wire", filling)
+    steps.then("the patches' surfaces sewn into the demo part's solid", surfaces)
 
 
 g.start("fitted network of the demo part", build, limit=280)

@@ -1,0 +1,123 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""From lines to surfaces in FreeCAD (issue 21, first step): FeatureLines.fitSurfaces on a
+recomputed extraction. A sampled box gives 6 planes sewn into a valid solid of the box's volume;
+the demo cloud gives the demo part's 7 planes, 6 cylinders and 1 torus, a valid solid, each face
+within a fraction of a spacing of its patch's points; a patch the lines leave open is reported
+with its reason, not a failure; a stale extraction is refused with a ValueError."""
+
+import os
+import unittest
+
+import FreeCAD
+import Part
+
+import FeatureLines
+import sampled_shapes
+import support
+
+EDGE, SPACING = 20.0, 0.5
+
+
+class BoxTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.doc = support.new_document("SurfacesBox")
+        cls.points = sampled_shapes.cube(EDGE, SPACING, 12)
+        cls.cloud, cls.lines = support.add_extraction(cls.doc, cls.points)
+        cls.result = FeatureLines.fitSurfaces(cls.lines)
+
+    @classmethod
+    def tearDownClass(cls):
+        support.close_document(cls.doc)
+
+    def test_six_planes_sewn_into_a_solid_of_the_boxs_volume(self):
+        faces = self.result["faces"]
+        self.assertEqual([f["kind"] for f in faces], ["plane"] * 6, [f["problem"] for f in faces])
+        self.assertTrue(self.result["solid"])
+        self.assertTrue(self.result["valid"])
+        shape = self.result["shape"]
+        self.assertEqual(len(shape.Solids), 1)
+        self.assertAlmostEqual(shape.Volume, EDGE ** 3, delta=0.01 * EDGE ** 3)
+        for f in faces:
+            self.assertEqual(f["problem"], "")
+            self.assertLess(f["rms_deviation"], 0.1 * SPACING)
+            self.assertIsInstance(f["face"], Part.Face)
+
+    def test_the_shape_can_be_shown_and_saved(self):
+        feature = Part.show(self.result["shape"], "Surfaces")
+        self.doc.recompute()
+        self.assertTrue(feature.Shape.isValid())
+        self.assertAlmostEqual(feature.Shape.Volume, EDGE ** 3, delta=0.01 * EDGE ** 3)
+
+
+class DemoTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.doc = support.new_document("SurfacesDemo")
+        cls.cloud = cls.doc.addObject("Points::Feature", "Cloud")
+        cls.cloud.Points = FeatureLines.readCloud(
+            os.path.join(os.environ["FEATURELINES_SAMPLES"], "boss_blend.xyz"))
+        cls.lines = FeatureLines.makeExtraction(cls.cloud)
+        cls.doc.recompute()
+        cls.result = FeatureLines.fitSurfaces(cls.lines)
+
+    @classmethod
+    def tearDownClass(cls):
+        support.close_document(cls.doc)
+
+    def test_planes_cylinders_and_a_torus_sewn_into_a_valid_solid(self):
+        kinds = [f["kind"] for f in self.result["faces"]]
+        problems = [f["problem"] for f in self.result["faces"] if f["problem"]]
+        self.assertEqual(problems, [])
+        self.assertEqual(kinds.count("plane"), 7, kinds)
+        self.assertEqual(kinds.count("cylinder"), 6, kinds)
+        self.assertEqual(kinds.count("torus"), 1, kinds)
+        self.assertTrue(self.result["solid"] and self.result["valid"])
+        spacing = self.lines.Spacing.Value
+        self.assertLess(self.result["tolerance"], spacing)
+        for f in self.result["faces"]:
+            self.assertLess(f["rms_deviation"], 0.2 * spacing, f)
+
+    def test_a_moved_cloud_moves_its_surfaces(self):
+        # The faces are in world coordinates, as the lines: a cloud placed elsewhere gives the
+        # same solid placed there.
+        doc = support.new_document("SurfacesMoved")
+        try:
+            cloud = doc.addObject("Points::Feature", "Cloud")
+            cloud.Points = self.cloud.Points
+            shift = FreeCAD.Vector(100, -50, 20)
+            cloud.Placement = FreeCAD.Placement(shift, FreeCAD.Rotation())
+            lines = FeatureLines.makeExtraction(cloud)
+            doc.recompute()
+            moved = FeatureLines.fitSurfaces(lines)["shape"]
+            here = self.result["shape"]
+            # The extraction of the moved cloud rounds differently: the same within 0.1 %.
+            self.assertAlmostEqual(moved.Volume, here.Volume, delta=1e-3 * here.Volume)
+            spacing = self.lines.Spacing.Value
+            self.assertLess((moved.BoundBox.Center - here.BoundBox.Center - shift).Length,
+                            0.1 * spacing)
+        finally:
+            support.close_document(doc)
+
+
+class OpenAndStaleTest(unittest.TestCase):
+    def test_an_open_patch_is_reported_and_a_stale_extraction_refused(self):
+        doc = support.new_document("SurfacesOpen")
+        try:
+            points = sampled_shapes.cube(EDGE, SPACING, 13)
+            cloud, lines = support.add_extraction(doc, points)
+            # Only the sharp lines of one face: its neighbours' borders are open.
+            lines.SharpEdges = False
+            doc.recompute()
+            result = FeatureLines.fitSurfaces(lines)
+            self.assertFalse(result["solid"])
+            self.assertTrue(all(f["problem"] for f in result["faces"] if f["face"] is None))
+            cloud.Placement = FreeCAD.Placement(FreeCAD.Vector(1, 0, 0), FreeCAD.Rotation())
+            with self.assertRaises(ValueError):
+                FeatureLines.fitSurfaces(lines)
+        finally:
+            support.close_document(doc)
+
+
+if __name__ == "__main__":
+    unittest.main()
