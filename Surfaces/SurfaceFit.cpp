@@ -388,16 +388,14 @@ FittedSurface fitSphere(const PointMatrix& P)
     return s;
 }
 
-FittedSurface fitCylinder(const PointMatrix& P)
+namespace {
+
+FittedSurface cylinderWith(const PointMatrix& P, const NormalMatrix& normals)
 {
     const Eigen::Index n = P.rows();
     const Eigen::Vector3d c0 = centroidOf(P);
     // The axis: the direction the points' normals are most nearly all perpendicular to.
-    NeighbourOptions no;
-    no.k = static_cast<int>(std::min<Eigen::Index>(12, n - 1));
-    const Neighbourhoods N = nearestNeighbours(P, no);
-    const NormalEstimate normals = pcaNormals(P, N);
-    const Eigen::Matrix3d nn = normals.normals.transpose() * normals.normals;
+    const Eigen::Matrix3d nn = normals.transpose() * normals;
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(nn);
     const Eigen::Vector3d a0 = solver.eigenvectors().col(0);
     Eigen::Vector3d e1;
@@ -442,11 +440,11 @@ FittedSurface fitCylinder(const PointMatrix& P)
     return s;
 }
 
-FittedSurface fitCone(const PointMatrix& P)
+FittedSurface coneWith(const PointMatrix& P, const NormalMatrix& normals)
 {
     Eigen::Vector3d point;
     Eigen::Vector3d axis;
-    if (!revolutionAxis(P, patchNormals(P), point, axis)) {
+    if (!revolutionAxis(P, normals, point, axis)) {
         return failedFit(SurfaceKind::Cone);
     }
     // The profile: rho = r0 + k h, a line in the half-plane (total least squares).
@@ -492,11 +490,11 @@ FittedSurface fitCone(const PointMatrix& P)
     return s;
 }
 
-FittedSurface fitTorus(const PointMatrix& P)
+FittedSurface torusWith(const PointMatrix& P, const NormalMatrix& normals)
 {
     Eigen::Vector3d point;
     Eigen::Vector3d axis;
-    if (!revolutionAxis(P, patchNormals(P), point, axis)) {
+    if (!revolutionAxis(P, normals, point, axis)) {
         return failedFit(SurfaceKind::Torus);
     }
     // The profile: a circle about (h0, R) of radius r in the half-plane (algebraic).
@@ -539,6 +537,8 @@ FittedSurface fitTorus(const PointMatrix& P)
     return s;
 }
 
+} // namespace
+
 double estimatePatchNoise(const PointMatrix& P, double spacing)
 {
     if (P.rows() < 8 || !(spacing > 0.0)) {
@@ -549,6 +549,21 @@ double estimatePatchNoise(const PointMatrix& P, double spacing)
     const Neighbourhoods N = nearestNeighbours(P, no);
     const NormalEstimate normals = pcaNormals(P, N);
     return estimateNoise(P, normals.normals, N, spacing, 2000) * spacing / 0.9;
+}
+
+FittedSurface fitCylinder(const PointMatrix& P)
+{
+    return cylinderWith(P, patchNormals(P));
+}
+
+FittedSurface fitCone(const PointMatrix& P)
+{
+    return coneWith(P, patchNormals(P));
+}
+
+FittedSurface fitTorus(const PointMatrix& P)
+{
+    return torusWith(P, patchNormals(P));
 }
 
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
@@ -583,7 +598,25 @@ FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
     // Of the sphere, cylinder, cone and torus within the tolerance, the first (the fewest
     // parameters) whose deviation is within 1.5 times the least: a cylinder is also a cone of
     // angle near 0 and a torus of a large tube, closer by a hair.
-    const FittedSurface candidates[4] = {fitSphere(P), fitCylinder(P), fitCone(P), fitTorus(P)};
+    // Fitted to at most maxFitPoints of the points, evenly picked (the normals once, over their
+    // own neighbours), then measured on all.
+    const Eigen::Index step =
+        std::max<Eigen::Index>(1, (P.rows() + options.maxFitPoints - 1) /
+                                      std::max(1, options.maxFitPoints));
+    PointMatrix S((P.rows() + step - 1) / step, 3);
+    for (Eigen::Index i = 0; i < S.rows(); ++i) {
+        S.row(i) = P.row(i * step);
+    }
+    const NormalMatrix normals = patchNormals(S);
+    FittedSurface candidates[4] = {fitSphere(S), cylinderWith(S, normals), coneWith(S, normals),
+                                   torusWith(S, normals)};
+    if (step > 1) {
+        for (FittedSurface& c : candidates) {
+            if (std::isfinite(c.rmsDeviation)) {
+                measure(c, P);
+            }
+        }
+    }
     auto accepted = [&](const FittedSurface& s) {
         return s.rmsDeviation <= tolerance && s.radius > 0.0 &&
                s.radius <= options.maxRadiusRatio * extent &&

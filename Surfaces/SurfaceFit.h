@@ -75,6 +75,9 @@ struct SurfaceFitOptions
     /// A sphere or cylinder wider than this multiple of the patch's extent is a plane's
     /// approximation, not a surface of its own (20).
     double maxRadiusRatio = 20.0;
+    /// The sphere, cylinder, cone and torus are fitted to at most this many of the points,
+    /// evenly picked, and measured on all (20000).
+    int maxFitPoints = 20000;
     /// BSpline: control points per direction, at most (12), and about one per this many
     /// spacings of the patch's extent (4).
     int maxPoles = 12;

@@ -15,6 +15,8 @@
 #include <random>
 
 #include "CadShapes.h"
+#include "PartFamilies.h"
+#include "ScanSampling.h"
 #include "FeatureLines/Extraction.h"
 #include "FeatureLines/curves/CurveNetwork.h"
 #include "FeatureLines/io/CloudIO.h"
@@ -278,6 +280,27 @@ TEST(PatchSurfaces, TheDemoCloudIsTheDemoPartsSolid)
     EXPECT_TRUE(out.valid);
     const double truth = volumeOf(bench::makeCadShape("boss_blend").shape);
     EXPECT_NEAR(volumeOf(out.shape), truth, 0.01 * truth);
+}
+
+TEST(PatchSurfaces, AMergedViewScansPatchesGiveFacesOrReasonsNotACrash)
+{
+    // The random bracket of benchmark seed 1025 scanned in merged views: one patch's border
+    // made OpenCASCADE 7.6's ShapeFix_Face::FixPeriodicDegenerated dereference a null handle
+    // (a segmentation fault, which no exception handler catches). Every patch now gets a valid
+    // face or a reason.
+    const bench::RandomPart part = bench::makeRandomPart(1025);
+    bench::ScanOptions scan = bench::drawScanOptions(1025);
+    scan.points = part.targetPoints;
+    const bench::ScannedCloud cloud = bench::sampleLikeAScanner(part.shape, scan);
+    const PatchSurfaces out = surfacesOf(cloud.points);
+    ASSERT_FALSE(out.faces.empty());
+    for (const PatchFace& f : out.faces) {
+        if (f.face.IsNull()) {
+            EXPECT_FALSE(f.problem.empty()) << "patch " << f.patch;
+        } else {
+            EXPECT_TRUE(f.problem.empty()) << f.problem;
+        }
+    }
 }
 
 } // namespace
