@@ -7,11 +7,13 @@
 // of the B-rep's volume.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 
 #include "CadShapes.h"
@@ -301,6 +303,43 @@ TEST(PatchSurfaces, AMergedViewScansPatchesGiveFacesOrReasonsNotACrash)
             EXPECT_TRUE(f.problem.empty()) << f.problem;
         }
     }
+}
+
+TEST(PatchSurfaces, ABadPatchGetsNoFaceAndAReason)
+{
+    // A square border wire around points that make no surface: too few, on a line, not finite;
+    // and good points without a border.
+    const double h = 5.0;
+    BRepBuilderAPI_MakePolygon square(gp_Pnt(-h, -h, 0), gp_Pnt(h, -h, 0), gp_Pnt(h, h, 0),
+                                      gp_Pnt(-h, h, 0), Standard_True);
+    const std::vector<TopoDS_Wire> wires = {square.Wire()};
+    PointMatrix few(4, 3);
+    few << 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0;
+    PointMatrix line(20, 3);
+    for (int i = 0; i < 20; ++i) {
+        line.row(i) << -4.0 + 0.4 * i, 0.0, 0.0;
+    }
+    PointMatrix notFinite = shapes::plane(9.0, 1.0, 3).points;
+    notFinite(5, 2) = std::numeric_limits<double>::infinity();
+    for (const PointMatrix* bad : {&few, &line, &notFinite}) {
+        const PatchFace f = fitPatchFace(7, *bad, wires, 1.0, 0.0);
+        EXPECT_TRUE(f.face.IsNull());
+        EXPECT_NE(f.problem.find("patch 7: "), std::string::npos) << f.problem;
+    }
+    const PatchFace open = fitPatchFace(8, shapes::plane(9.0, 1.0, 3).points, {}, 1.0, 0.0);
+    EXPECT_TRUE(open.face.IsNull());
+    EXPECT_EQ(open.problem, "patch 8: no closed border");
+    // The good patch with its border: a plane face of the square's area.
+    const PatchFace good = fitPatchFace(9, shapes::plane(9.0, 1.0, 3).points, wires, 1.0, 0.0);
+    ASSERT_FALSE(good.face.IsNull()) << good.problem;
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(good.face, props);
+    EXPECT_NEAR(props.Mass(), 4.0 * h * h, 1e-6);
+    // Sewing nothing is no shape and no crash; the reasons are kept.
+    const PatchSurfaces none = sewPatchFaces({open}, 1.0);
+    EXPECT_TRUE(none.shape.IsNull());
+    EXPECT_FALSE(none.solid);
+    ASSERT_EQ(none.problems.size(), 1u);
 }
 
 } // namespace
