@@ -18,6 +18,7 @@
 #include "ExtractionFeature.h"
 #include "PropertyPointIndices.h"
 #include "PythonModule.h"
+#include "SurfacesFeature.h"
 
 namespace FeatureLines {
 
@@ -93,6 +94,7 @@ PyMOD_INIT_FUNC(FeatureLines)
     }
     FeatureLines::PropertyPointIndices::init();
     FeatureLines::Extraction::init();
+    FeatureLines::Surfaces::init();
     PyObject* mod = Base::Interpreter().addModule(new FeatureLines::Module);
     // Lives as long as the process, as the module does.
     App::GetApplication().signalStartSaveDocument.connect(&FeatureLines::warnOnSaving);

@@ -50,6 +50,7 @@ private:
     // Surfaces: a surface per patch, trimmed by its border, sewn.
     void addSurfaceFunctions();
     Py::Object fitSurfaces(const Py::Tuple& args, const Py::Dict& keywords);
+    Py::Object makeSurfaces(const Py::Tuple& args, const Py::Dict& keywords);
 
     // The cache of analyses and the progress observer.
     void addCacheFunctions();

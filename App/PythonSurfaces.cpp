@@ -1,44 +1,23 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The Python function fitSurfaces: the patches of a recomputed extraction as fitted surfaces
-// trimmed by their closed borders and sewn (Surfaces/PatchSurfaces.h; issue 21, first step).
+// The Python functions fitSurfaces (the patches of a recomputed extraction as fitted surfaces
+// trimmed by their closed borders and sewn: Surfaces/PatchSurfaces.h; issue 21, first step) and
+// makeSurfaces (the same as a parametric document object, SurfacesFeature.h).
 #include <FCConfig.h>
 
+#include <App/Document.h>
 #include <Mod/Part/App/TopoShape.h>
 #include <Mod/Part/App/TopoShapeFacePy.h>
 #include <Mod/Part/App/TopoShapePy.h>
-#include <Mod/Points/App/PointsFeature.h>
-#include <TopoDS.hxx>
-#include <TopoDS_Iterator.hxx>
 
-#include <map>
-#include <vector>
+#include <string>
 
 #include "ExtractionFeature.h"
 #include "PatchSurfaces.h"
 #include "PythonModule.h"
 #include "PythonValues.h"
-#include "StoredResult.h"
+#include "SurfacesFeature.h"
 
 namespace FeatureLines {
-
-namespace {
-
-/// Per patch with a closed border: its wires in PatchBorders (world coordinates), outer first.
-std::map<long, std::vector<TopoDS_Wire>> borderWires(const Extraction& e)
-{
-    std::map<long, std::vector<TopoDS_Wire>> out;
-    const std::vector<long>& patches = e.PatchBorderPatches.getValues();
-    size_t i = 0;
-    for (TopoDS_Iterator it(e.PatchBorders.getValue()); it.More() && i < patches.size();
-         it.Next(), ++i) {
-        if (it.Value().ShapeType() == TopAbs_WIRE) {
-            out[patches[i]].push_back(TopoDS::Wire(it.Value()));
-        }
-    }
-    return out;
-}
-
-} // namespace
 
 void Module::addSurfaceFunctions()
 {
@@ -59,6 +38,38 @@ void Module::addSurfaceFunctions()
         "      major), 'face' (Part.Face, or None) and 'problem' ('' when it has a face)\n"
         "e.g. Part.show(FeatureLines.fitSurfaces(extraction)['shape']). Raises ValueError as\n"
         "makePatchClouds does.");
+    add_keyword_method(
+        "makeSurfaces", &Module::makeSurfaces,
+        "makeSurfaces(extraction, name='Surfaces', min_points=0) -> FeatureLines::Surfaces\n"
+        "The parametric object of fitSurfaces: its Source is the extraction, and a recompute\n"
+        "fits, trims and sews the faces again when the lines change (FaceKinds,\n"
+        "FaceRmsDeviations, FaceMaxDeviations, Problems, IsSolid, IsValid, SewingTolerance).\n"
+        "A recompute that makes no face fails with the reason and keeps the faces before.\n"
+        "Recompute the document to compute it.");
+}
+
+Py::Object Module::makeSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
+{
+    PyObject* object = nullptr;
+    const char* name = "Surfaces";
+    int minPoints = 0;
+    static const char* names[] = {"extraction", "name", "min_points", nullptr};
+    if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "O|si",
+                                     const_cast<char**>(names), &object, &name, &minPoints)) {
+        throw Py::Exception();
+    }
+    Extraction* e = extractionOf(object);
+    if (!e) {
+        throw Py::TypeError("makeSurfaces needs a FeatureLines::Extraction object");
+    }
+    if (minPoints < 0) {
+        throw Py::ValueError("makeSurfaces: min_points must be 0 or more, got " +
+                             std::to_string(minPoints));
+    }
+    auto* obj = static_cast<Surfaces*>(e->getDocument()->addObject("FeatureLines::Surfaces", name));
+    obj->Source.setValue(e);
+    obj->MinPoints.setValue(minPoints);
+    return Py::asObject(obj->getPyObject());
 }
 
 Py::Object Module::fitSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
@@ -74,41 +85,7 @@ Py::Object Module::fitSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
     if (!e) {
         throw Py::TypeError("fitSurfaces needs a FeatureLines::Extraction object");
     }
-    requireCurrentResult(*e, "fitSurfaces");
-    if (minPoints <= 0) {
-        minPoints = 2 * static_cast<int>(e->NeighbourCount.getValue());
-    }
-    const Points::PointKernel& kernel =
-        static_cast<Points::Feature*>(e->Source.getValue())->Points.getValue();
-    const std::vector<long>& patch = e->PointPatch.getValues();
-    std::map<long, std::vector<size_t>> members;
-    for (size_t i = 0; i < patch.size(); ++i) {
-        if (patch[i] >= 0) {
-            members[patch[i]].push_back(i);
-        }
-    }
-    const std::map<long, std::vector<TopoDS_Wire>> wires = borderWires(*e);
-    const double spacing = e->Spacing.getValue();
-    std::vector<featurelines::surfaces::PatchFace> faces;
-    for (const auto& [id, rows] : members) {
-        if (static_cast<int>(rows.size()) < minPoints) {
-            continue;
-        }
-        featurelines::PointMatrix points(static_cast<Eigen::Index>(rows.size()), 3);
-        for (size_t r = 0; r < rows.size(); ++r) {
-            const Base::Vector3d p = kernel.getPoint(rows[r]);
-            points.row(static_cast<Eigen::Index>(r)) << p.x, p.y, p.z;
-        }
-        const auto found = wires.find(id);
-        faces.push_back(featurelines::surfaces::fitPatchFace(
-            static_cast<int>(id), points,
-            found == wires.end() ? std::vector<TopoDS_Wire>() : found->second, spacing, -1.0));
-        if (found == wires.end()) {
-            faces.back().problem = "patch " + std::to_string(id) + ": its border is not closed";
-        }
-    }
-    const featurelines::surfaces::PatchSurfaces sewn =
-        featurelines::surfaces::sewPatchFaces(std::move(faces), spacing);
+    const featurelines::surfaces::PatchSurfaces sewn = surfacesOf(*e, minPoints, "fitSurfaces");
     Py::List list;
     for (const featurelines::surfaces::PatchFace& f : sewn.faces) {
         Py::Dict d;

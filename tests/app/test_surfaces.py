@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """From lines to surfaces in FreeCAD (issue 21, first step): FeatureLines.fitSurfaces on a
-recomputed extraction. A sampled box gives 6 planes sewn into a valid solid of the box's volume;
+recomputed extraction, and its parametric object FeatureLines.makeSurfaces, which follows the
+lines when they recompute, keeps its faces when a recompute fails, and is saved with them. A sampled box gives 6 planes sewn into a valid solid of the box's volume;
 the demo cloud gives the demo part's 7 planes, 6 cylinders and 1 torus, a valid solid, each face
 within a fraction of a spacing of its patch's points; a patch the lines leave open is reported
 with its reason, not a failure; a stale extraction is refused with a ValueError."""
@@ -96,6 +97,69 @@ class DemoTest(unittest.TestCase):
             spacing = self.lines.Spacing.Value
             self.assertLess((moved.BoundBox.Center - here.BoundBox.Center - shift).Length,
                             0.1 * spacing)
+        finally:
+            support.close_document(doc)
+
+
+class ParametricTest(unittest.TestCase):
+    def test_the_surfaces_follow_the_lines_and_a_failed_recompute_keeps_them(self):
+        doc = support.new_document("SurfacesParametric")
+        try:
+            points = sampled_shapes.cube(EDGE, SPACING, 14)
+            cloud, lines = support.add_extraction(doc, points)
+            surfaces = FeatureLines.makeSurfaces(lines)
+            doc.recompute()
+            self.assertEqual(support.error_message(surfaces), "")
+            self.assertEqual(list(surfaces.FaceKinds), ["plane"] * 6)
+            self.assertTrue(surfaces.IsSolid and surfaces.IsValid)
+            self.assertEqual(list(surfaces.Problems), [])
+            self.assertAlmostEqual(surfaces.Shape.Volume, EDGE ** 3, delta=0.01 * EDGE ** 3)
+            self.assertEqual(len(surfaces.FaceRmsDeviations), 6)
+            # The cloud moved: the extraction and then the surfaces follow.
+            shift = FreeCAD.Vector(0, 0, 40)
+            cloud.Placement = FreeCAD.Placement(shift, FreeCAD.Rotation())
+            doc.recompute()
+            self.assertEqual(support.error_message(surfaces), "")
+            self.assertAlmostEqual(surfaces.Shape.BoundBox.Center.z, 40.0, delta=0.1 * SPACING)
+            # No sharp lines: no patch is closed, the recompute fails with the reason and the
+            # faces of the run before stay.
+            lines.SharpEdges = False
+            doc.recompute()
+            message = support.error_message(surfaces)
+            self.assertIn("got a surface", message)
+            self.assertAlmostEqual(surfaces.Shape.Volume, EDGE ** 3, delta=0.01 * EDGE ** 3)
+            self.assertAlmostEqual(surfaces.Shape.BoundBox.Center.z, 40.0, delta=0.1 * SPACING)
+            # Back: recovered.
+            lines.SharpEdges = True
+            doc.recompute()
+            self.assertEqual(support.error_message(surfaces), "")
+            self.assertTrue(surfaces.IsSolid)
+            # Saved and reopened with its faces and lists.
+            path = os.path.join(support.scratch_dir("surfaces"), "box.FCStd")
+            doc.saveAs(path)
+            name, object_name = doc.Name, surfaces.Name
+            FreeCAD.closeDocument(name)
+            doc = FreeCAD.openDocument(path)
+            again = doc.getObject(object_name)
+            self.assertEqual(list(again.FaceKinds), ["plane"] * 6)
+            self.assertAlmostEqual(again.Shape.Volume, EDGE ** 3, delta=0.01 * EDGE ** 3)
+        finally:
+            support.close_document(doc)
+
+    def test_a_source_that_is_no_extraction_is_refused(self):
+        doc = support.new_document("SurfacesBadSource")
+        try:
+            points = sampled_shapes.cube(EDGE, SPACING, 15)
+            cloud, lines = support.add_extraction(doc, points)
+            with self.assertRaises(TypeError):
+                FeatureLines.makeSurfaces(cloud)
+            with self.assertRaises(ValueError):
+                FeatureLines.makeSurfaces(lines, min_points=-1)
+            surfaces = FeatureLines.makeSurfaces(lines)
+            surfaces.Source = cloud
+            doc.recompute()
+            self.assertIn("Source must be a FeatureLines extraction",
+                          support.error_message(surfaces))
         finally:
             support.close_document(doc)
 

@@ -3,7 +3,7 @@
 extraction's Shape is a few tens of fitted edges (lines, arcs, circles, B-splines) on shared
 vertices, drawn by type colour; then FreeCAD's own Surface::Filling is built on one patch's
 closed border wire (its edges picked from the extraction, as a user picks them in Surface >
-Filling) and lies on that patch's points. Then FeatureLines.fitSurfaces makes the patches' surfaces, sewn into the demo part's solid.
+Filling) and lies on that patch's points. Then FeatureLines.makeSurfaces makes the patches' surfaces, sewn into the demo part's solid.
 Screenshots at FreeCAD's default layout (1366 x 768): fitted_network
 (docs/images/gui-fitted-network.png), patch_filling (docs/images/gui-patch-filling.png) and
 surfaces (docs/images/gui-surfaces.png)."""
@@ -95,22 +95,19 @@ def filling():
 
 
 def surfaces():
-    import Part
-
     import FeatureLines
 
     lines, doc = state["lines"], state["doc"]
     if "Filling" in [o.Name for o in doc.Objects]:
         doc.getObject("Filling").ViewObject.Visibility = False
-    result = FeatureLines.fitSurfaces(lines)
-    kinds = [f["kind"] for f in result["faces"]]
-    g.log("surfaces: %s, solid %s, valid %s, tolerance %.3g"
-          % ({k: kinds.count(k) for k in sorted(set(map(str, kinds)))}, result["solid"],
-             result["valid"], result["tolerance"]))
-    g.check(result["solid"] and result["valid"], "the demo part's faces close into a valid "
-            "solid: %s" % [f["problem"] for f in result["faces"] if f["problem"]])
-    feature = Part.show(result["shape"], "Surfaces")
+    feature = FeatureLines.makeSurfaces(lines)
     doc.recompute()
+    kinds = [k for k in feature.FaceKinds if k]
+    g.log("surfaces: %s, solid %s, valid %s, tolerance %.3g"
+          % ({k: kinds.count(k) for k in sorted(set(kinds))}, feature.IsSolid,
+             feature.IsValid, feature.SewingTolerance))
+    g.check(feature.IsSolid and feature.IsValid, "the demo part's faces close into a valid "
+            "solid: %s" % list(feature.Problems))
     # Each face coloured by its kind: planes grey-blue, cylinders green, the torus orange.
     colours = {"plane": (0.62, 0.70, 0.85), "cylinder": (0.55, 0.80, 0.55),
                "torus": (0.95, 0.65, 0.30), "cone": (0.85, 0.55, 0.85),
