@@ -27,7 +27,8 @@ class FeatureLinesWorkbench(FreeCADGui.Workbench):
     def Initialize(self):
         import FeatureLinesGui  # noqa: F401  (registers the command and the view provider)
 
-        commands = ["FeatureLines_Extract", "FeatureLines_MakePatchClouds"]
+        commands = ["FeatureLines_Extract", "FeatureLines_MakePatchClouds",
+                    "FeatureLines_FitSurfaces"]
         colouring = ["FeatureLines_ColourByRegion", "FeatureLines_ColourByPatch",
                      "FeatureLines_ColourByLabel", "FeatureLines_ColourByCurvature",
                      "FeatureLines_ColourNothing"]

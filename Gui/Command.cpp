@@ -172,6 +172,52 @@ bool CmdFeatureLinesMakePatchClouds::isActive()
     return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
 }
 
+// ---- Surfaces ------------------------------------------------------------------------------
+
+DEF_STD_CMD_A(CmdFeatureLinesFitSurfaces)
+
+CmdFeatureLinesFitSurfaces::CmdFeatureLinesFitSurfaces()
+    : Command("FeatureLines_FitSurfaces")
+{
+    sAppModule = "FeatureLines";
+    sGroup = QT_TR_NOOP("FeatureLines");
+    sMenuText = QT_TR_NOOP("Fit surfaces");
+    sToolTipText =
+        QT_TR_NOOP("A surface for every patch of the selected feature lines whose border the\n"
+                   "lines close (plane, sphere, cylinder, cone, torus, else a B-spline),\n"
+                   "trimmed by that border; the faces sewn, a solid where they close. The new\n"
+                   "Surfaces object follows the lines when they recompute.");
+    sWhatsThis = "FeatureLines_FitSurfaces";
+    sStatusTip = sToolTipText;
+}
+
+void CmdFeatureLinesFitSurfaces::activated(int)
+{
+    App::DocumentObject* lines = selectedExtraction(QObject::tr("Fit surfaces"));
+    if (!lines) {
+        return;
+    }
+    const char* doc = lines->getDocument()->getName();
+    openCommand(QT_TRANSLATE_NOOP("Command", "Fit surfaces"));
+    try {
+        doCommand(Doc, "import FeatureLines");
+        doCommand(Doc,
+                  "_surfaces = FeatureLines.makeSurfaces(App.getDocument('%s').getObject('%s'))",
+                  doc, lines->getNameInDocument());
+        doCommand(Doc, "App.getDocument('%s').recompute()", doc);
+        commitCommand();
+    } catch (const Base::Exception& e) {
+        abortCommand();
+        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("No surfaces"),
+                             QString::fromUtf8(e.what()));
+    }
+}
+
+bool CmdFeatureLinesFitSurfaces::isActive()
+{
+    return hasActiveDocument() && !Gui::Control().activeDialog() && extractionSelected();
+}
+
 /// A command on the one FeatureLines object selected, named and described by its arguments;
 /// apply() does its work.
 class CmdFeatureLinesOnLines : public Gui::Command
@@ -426,6 +472,7 @@ void CreateFeatureLinesCommands()
     Gui::CommandManager& manager = Gui::Application::Instance->commandManager();
     manager.addCommand(new CmdFeatureLinesExtract());
     manager.addCommand(new CmdFeatureLinesMakePatchClouds());
+    manager.addCommand(new CmdFeatureLinesFitSurfaces());
     manager.addCommand(new CmdFeatureLinesDropShortLines());
     manager.addCommand(new CmdFeatureLinesDeleteLines());
     for (const auto& c : cleaningCommands) {

@@ -3,7 +3,8 @@
 extraction's Shape is a few tens of fitted edges (lines, arcs, circles, B-splines) on shared
 vertices, drawn by type colour; then FreeCAD's own Surface::Filling is built on one patch's
 closed border wire (its edges picked from the extraction, as a user picks them in Surface >
-Filling) and lies on that patch's points. Then FeatureLines.makeSurfaces makes the patches' surfaces, sewn into the demo part's solid.
+Filling) and lies on that patch's points. Then the command Fit surfaces (FeatureLines.makeSurfaces) makes the patches' surfaces, sewn
+into the demo part's solid.
 Screenshots at FreeCAD's default layout (1366 x 768): fitted_network
 (docs/images/gui-fitted-network.png), patch_filling (docs/images/gui-patch-filling.png) and
 surfaces (docs/images/gui-surfaces.png)."""
@@ -95,13 +96,21 @@ def filling():
 
 
 def surfaces():
-    import FeatureLines
+    import FreeCADGui
 
     lines, doc = state["lines"], state["doc"]
     if "Filling" in [o.Name for o in doc.Objects]:
         doc.getObject("Filling").ViewObject.Visibility = False
-    feature = FeatureLines.makeSurfaces(lines)
-    doc.recompute()
+    # As a user does: the lines selected, Feature Lines > Fit surfaces.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(lines)
+    FreeCADGui.runCommand("FeatureLines_FitSurfaces")
+    g.settle()
+    made = [o for o in doc.Objects if o.TypeId == "FeatureLines::Surfaces"]
+    g.check(len(made) == 1, "the command made one Surfaces object: %s" % made)
+    feature = made[0]
+    g.check(feature.Source == lines, "its source is the selected lines")
+    g.check(doc.UndoNames[:1] == ["Fit surfaces"], "one undo step: %s" % doc.UndoNames)
     kinds = [k for k in feature.FaceKinds if k]
     g.log("surfaces: %s, solid %s, valid %s, tolerance %.3g"
           % ({k: kinds.count(k) for k in sorted(set(kinds))}, feature.IsSolid,
