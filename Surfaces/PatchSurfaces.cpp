@@ -1,46 +1,46 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Patch faces: the fitted surface, the border's wires with curves on it made by ShapeFix
-// (projection of the network's edges), and the sewing of the faces (BRepBuilderAPI_Sewing).
+// (projection of the network's edges) or, for a band all round a surface of revolution, the
+// surface's own circles; and the sewing of the faces (BRepBuilderAPI_Sewing).
 #include "PatchSurfaces.h"
 
+#include <BRep_Tool.hxx>
 #include <BRepAdaptor_Curve.hxx>
-#include <GCPnts_AbscissaPoint.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
-#include <BRepTools_WireExplorer.hxx>
-#include <GeomLProp_SLProps.hxx>
-#include <Precision.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Result.hxx>
 #include <BRepClass_FaceClassifier.hxx>
-#include <BRep_Builder.hxx>
-#include <GeomAPI_ProjectPointOnSurf.hxx>
-#include <gp_Pnt2d.hxx>
-#include <BRep_Tool.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Pnt2d.hxx>
+#include <Precision.hxx>
 #include <ShapeAnalysis_ShapeTolerance.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <Standard_Failure.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TopAbs_ShapeEnum.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
-#include <gp_Ax3.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -243,10 +243,10 @@ TopoDS_Face trimmedFace(const Handle(Geom_Surface)& surface, const std::vector<T
     return face;
 }
 
-/// A sphere's or cylinder's parametrisation placed for the patch: its seam (and a sphere's
-/// poles) away from the patch's points where they leave room, else the seam through a vertex of
-/// the border (a cylinder's band all round, a sphere beyond a hemisphere), so that the border's
-/// edges need not be cut where the seam crosses them.
+/// The parametrisation of a sphere, cylinder, cone or torus placed for the patch: its seam (and
+/// a sphere's poles) away from the patch's points where they leave room, else the seam through
+/// a vertex of the outer border wire (a band all round the axis, a sphere beyond a hemisphere),
+/// so that the border's edges need not be cut where the seam crosses them.
 /// Returns whether the points wrap all round (the seam runs through the vertex).
 bool placeSeam(FittedSurface& s, const PointMatrix& points, const TopoDS_Wire& outer)
 {
