@@ -631,7 +631,8 @@ double medianNoise(const ExtractionResult& result)
     }
     std::nth_element(noise.begin(), noise.begin() + static_cast<std::ptrdiff_t>(noise.size() / 2),
                      noise.end());
-    return noise[noise.size() / 2];
+    // The regions' estimates are in spacings (estimateNoise), the tolerance in model units.
+    return noise[noise.size() / 2] * result.spacing;
 }
 
 PatchSurfaces surfacesOfExtraction(const PointMatrix& P, const ExtractionResult& result,

@@ -81,8 +81,9 @@ PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& res
                                const cad::NetworkShapes& shapes, double noise,
                                const PatchSurfaceOptions& options = {});
 
-/// The scatter of an extraction's points about their surfaces: the median of its regions'
-/// noise estimates (RegionReport::noise), 0 without regions.
+/// The scatter of an extraction's points about their surfaces, in model units: the median of its
+/// regions' noise estimates (RegionReport::noise, in spacings) times the spacing; 0 without
+/// regions.
 double medianNoise(const ExtractionResult& result);
 
 /// The whole step from an extraction of P: its lines fitted as curves (fitCurveNetwork), the
