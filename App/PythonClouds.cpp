@@ -25,18 +25,6 @@ namespace FeatureLines {
 
 using featurelines::PointMatrix;
 
-namespace {
-
-/// The arguments (extraction, min_points=0) of makePatchClouds and patchBorders.
-struct PatchArguments
-{
-    Extraction& extraction;
-    int minPoints;
-};
-
-/// The arguments of `function`, the extraction's stored result checked to be current (its lists
-/// come from the last recompute or from the file: trusted only when current and consistent with
-/// one another and with the source).
 PatchArguments patchArguments(const Py::Tuple& args, const Py::Dict& keywords,
                               const std::string& function)
 {
@@ -54,6 +42,8 @@ PatchArguments patchArguments(const Py::Tuple& args, const Py::Dict& keywords,
     requireCurrentResult(*e, function);
     return {*e, minPoints};
 }
+
+namespace {
 
 /// Per patch of the extraction's points of at least `minPoints` points (0: twice
 /// NeighbourCount, the fewest a surface fit can lean on), its points' rows.

@@ -74,18 +74,9 @@ Py::Object Module::makeSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
 
 Py::Object Module::fitSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
 {
-    PyObject* object = nullptr;
-    int minPoints = 0;
-    static const char* names[] = {"extraction", "min_points", nullptr};
-    if (!PyArg_ParseTupleAndKeywords(args.ptr(), keywords.ptr(), "O|i", const_cast<char**>(names),
-                                     &object, &minPoints)) {
-        throw Py::Exception();
-    }
-    Extraction* e = extractionOf(object);
-    if (!e) {
-        throw Py::TypeError("fitSurfaces needs a FeatureLines::Extraction object");
-    }
-    const featurelines::surfaces::PatchSurfaces sewn = surfacesOf(*e, minPoints, "fitSurfaces");
+    const PatchArguments a = patchArguments(args, keywords, "fitSurfaces");
+    const featurelines::surfaces::PatchSurfaces sewn =
+        surfacesOf(a.extraction, a.minPoints, "fitSurfaces");
     Py::List list;
     for (const featurelines::surfaces::PatchFace& f : sewn.faces) {
         Py::Dict d;

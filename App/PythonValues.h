@@ -33,6 +33,19 @@ Cloud cloudOf(PyObject* obj);
 /// The FeatureLines::Extraction object, nullptr for any other object.
 Extraction* extractionOf(PyObject* obj);
 
+/// The arguments (extraction, min_points=0) of makePatchClouds, patchBorders and fitSurfaces.
+struct PatchArguments
+{
+    Extraction& extraction;
+    int minPoints;
+};
+
+/// The arguments of `function`, the extraction's stored result checked to be current (its lists
+/// come from the last recompute or from the file: trusted only when current and consistent with
+/// one another and with the source). Throws a Python TypeError or ValueError naming `function`.
+PatchArguments patchArguments(const Py::Tuple& args, const Py::Dict& keywords,
+                              const std::string& function);
+
 /// A list of numbers, or a text of numbers (parseThresholds); `what` names it in errors.
 std::vector<double> numbersOf(const Py::Object& value, const std::string& what);
 

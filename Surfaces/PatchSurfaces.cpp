@@ -620,19 +620,8 @@ PatchSurfaces fitPatchSurfaces(const PointMatrix& P, const ExtractionResult& res
 
 double medianNoise(const ExtractionResult& result)
 {
-    std::vector<double> noise;
-    for (const RegionReport& r : result.regions) {
-        if (std::isfinite(r.noise)) {
-            noise.push_back(r.noise);
-        }
-    }
-    if (noise.empty()) {
-        return 0.0;
-    }
-    std::nth_element(noise.begin(), noise.begin() + static_cast<std::ptrdiff_t>(noise.size() / 2),
-                     noise.end());
-    // The regions' estimates are in spacings (estimateNoise), the tolerance in model units.
-    return noise[noise.size() / 2] * result.spacing;
+    // The regions' estimates are in spacings, the tolerance in model units.
+    return cloudNoise(result) * result.spacing;
 }
 
 PatchSurfaces surfacesOfExtraction(const PointMatrix& P, const ExtractionResult& result,

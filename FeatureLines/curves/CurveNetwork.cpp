@@ -327,22 +327,6 @@ CurveFitInput fitInput(const NetworkEdge& e, bool freeLoop, const CurveFitOption
     return in;
 }
 
-/// The cloud's noise (x spacing): the median of its regions' estimates, 0 without regions.
-double cloudNoise(const ExtractionResult& result)
-{
-    std::vector<double> noise;
-    for (const RegionReport& r : result.regions) {
-        if (std::isfinite(r.noise)) {
-            noise.push_back(r.noise);
-        }
-    }
-    if (noise.empty()) {
-        return 0.0;
-    }
-    std::nth_element(noise.begin(), noise.begin() + noise.size() / 2, noise.end());
-    return noise[noise.size() / 2];
-}
-
 /// The direction of travel of edge e's curve leaving (atEnd false) or arriving at (true)
 /// its vertex.
 Vec3 endDirection(const NetworkEdge& e, bool atEnd)
@@ -417,6 +401,21 @@ void joinTangents(CurveNetwork& net, std::vector<CurveFitInput>& inputs, double 
 }
 
 } // namespace
+
+double cloudNoise(const ExtractionResult& result)
+{
+    std::vector<double> noise;
+    for (const RegionReport& r : result.regions) {
+        if (std::isfinite(r.noise)) {
+            noise.push_back(r.noise);
+        }
+    }
+    if (noise.empty()) {
+        return 0.0;
+    }
+    std::nth_element(noise.begin(), noise.begin() + noise.size() / 2, noise.end());
+    return noise[noise.size() / 2];
+}
 
 CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options)
 {

@@ -116,6 +116,10 @@ struct CurveFitOptions
     double smoothAngle = 30.0;
 };
 
+/// The cloud's noise in spacings: the median of its regions' estimates (RegionReport::noise),
+/// 0 without regions. The curves' and the surfaces' noise-aware tolerances start from it.
+double cloudNoise(const ExtractionResult& result);
+
 /// The network of fitted curves of `result`'s lines.
 CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options = {});
 
