@@ -41,6 +41,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <TopoDS_TShape.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +49,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include <Eigen/Geometry>
 
@@ -523,6 +525,13 @@ PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<T
             pf.problem = name + ": OpenCASCADE made no valid face of its " +
                          surfaceKindName(pf.surface.kind) + " and border (" + check + ")";
             pf.face.Nullify();
+        } else {
+            const double sign = pf.face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+            pf.deviations.resize(static_cast<size_t>(points.rows()));
+            for (Eigen::Index i = 0; i < points.rows(); ++i) {
+                pf.deviations[static_cast<size_t>(i)] =
+                    sign * signedSurfaceDistance(pf.surface, points.row(i).transpose());
+            }
         }
     } catch (const std::invalid_argument& e) {
         pf.problem = name + ": " + e.what();
@@ -531,6 +540,37 @@ PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<T
     }
     return pf;
 }
+
+namespace {
+
+/// Each face replaced by what became of it in the sewn `shape` (as oriented there), its
+/// deviations' sign turned with it where the sewing or the solid reversed it.
+void adoptSewnFaces(std::vector<PatchFace>& faces, const BRepBuilderAPI_Sewing& sew,
+                    const TopoDS_Shape& shape)
+{
+    std::unordered_map<const TopoDS_TShape*, TopoDS_Face> inShape;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+        inShape.emplace(it.Current().TShape().get(), TopoDS::Face(it.Current()));
+    }
+    for (PatchFace& pf : faces) {
+        if (pf.face.IsNull()) {
+            continue;
+        }
+        const TopoDS_Shape sewn = sew.IsModified(pf.face) ? sew.Modified(pf.face) : pf.face;
+        const auto found = inShape.find(sewn.TShape().get());
+        if (found == inShape.end()) {
+            continue;
+        }
+        if (found->second.Orientation() != pf.face.Orientation()) {
+            for (double& d : pf.deviations) {
+                d = -d;
+            }
+        }
+        pf.face = found->second;
+    }
+}
+
+} // namespace
 
 PatchSurfaces sewPatchFaces(std::vector<PatchFace> faces, double tolerance)
 {
@@ -572,6 +612,7 @@ PatchSurfaces sewPatchFaces(std::vector<PatchFace> faces, double tolerance)
         if (out.solid && !out.valid) {
             out.problems.push_back("the sewn solid is not valid (BRepCheck_Analyzer)");
         }
+        adoptSewnFaces(out.faces, sew, out.shape);
     } catch (const Standard_Failure& e) {
         out.problems.push_back(std::string("sewing failed: ") + e.GetMessageString());
     }

@@ -33,9 +33,14 @@ struct PatchFace
     int patch = -1;
     int points = 0;
     FittedSurface surface;
-    /// Null when the patch got no face; `problem` says why.
+    /// Null when the patch got no face; `problem` says why. After sewPatchFaces(), the face as
+    /// it is in the sewn shape (its orientation there).
     TopoDS_Face face;
     std::string problem;
+    /// Per point of the patch, in the order given: its signed distance from the surface,
+    /// positive on the side the face's normal points to (out of the solid where the faces
+    /// close into one); empty without a face.
+    std::vector<double> deviations;
 };
 
 struct PatchSurfaces

@@ -314,36 +314,37 @@ const char* surfaceKindName(SurfaceKind kind)
     return "unknown";
 }
 
-double surfaceDistance(const FittedSurface& s, const Eigen::Vector3d& x)
+double signedSurfaceDistance(const FittedSurface& s, const Eigen::Vector3d& x)
 {
+    const Eigen::Vector3d d = x - s.origin;
     switch (s.kind) {
     case SurfaceKind::Plane:
-        return std::abs((x - s.origin).dot(s.axis));
+        return d.dot(s.axis);
     case SurfaceKind::Sphere:
-        return std::abs((x - s.origin).norm() - s.radius);
-    case SurfaceKind::Cylinder: {
-        const Eigen::Vector3d d = x - s.origin;
-        return std::abs((d - d.dot(s.axis) * s.axis).norm() - s.radius);
-    }
+        return d.norm() - s.radius;
+    case SurfaceKind::Cylinder:
+        return (d - d.dot(s.axis) * s.axis).norm() - s.radius;
     case SurfaceKind::Cone: {
-        const Eigen::Vector3d d = x - s.origin;
         const double h = d.dot(s.axis);
         const double rho = (d - h * s.axis).norm();
-        return std::abs((rho - (s.radius + h * std::tan(s.halfAngle))) * std::cos(s.halfAngle));
+        return (rho - (s.radius + h * std::tan(s.halfAngle))) * std::cos(s.halfAngle);
     }
     case SurfaceKind::Torus: {
-        const Eigen::Vector3d d = x - s.origin;
         const double h = d.dot(s.axis);
         const double rho = (d - h * s.axis).norm();
-        return std::abs(std::hypot(rho - s.radius, h) - s.minorRadius);
+        return std::hypot(rho - s.radius, h) - s.minorRadius;
     }
     case SurfaceKind::BSpline: {
-        const Eigen::Vector3d d = x - s.origin;
         const Eigen::Vector3d e2 = s.axis.cross(s.uDirection);
-        return std::abs(d.dot(s.axis) - bsplineHeight(s, d.dot(s.uDirection), d.dot(e2)));
+        return d.dot(s.axis) - bsplineHeight(s, d.dot(s.uDirection), d.dot(e2));
     }
     }
     return 0.0;
+}
+
+double surfaceDistance(const FittedSurface& s, const Eigen::Vector3d& x)
+{
+    return std::abs(signedSurfaceDistance(s, x));
 }
 
 FittedSurface fitPlane(const PointMatrix& P)

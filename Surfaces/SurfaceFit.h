@@ -106,6 +106,11 @@ double estimatePatchNoise(const PointMatrix& P, double spacing);
 /// field's vertical distance).
 double surfaceDistance(const FittedSurface& surface, const Eigen::Vector3d& x);
 
+/// surfaceDistance with a sign: positive on the side the normal of makeSurface()'s surface
+/// points to (a plane's and a height field's `axis`; away from a sphere's centre, a cylinder's
+/// or cone's axis, a torus's centre line).
+double signedSurfaceDistance(const FittedSurface& surface, const Eigen::Vector3d& x);
+
 /// Each kind fitted alone (no B-spline), for tests and the report. The surfaces of revolution
 /// start from the axis the points' normals (PCA over their 12 nearest) meet best: every normal
 /// of such a surface meets its axis (Pottmann and Randrup 1998), a linear condition on the

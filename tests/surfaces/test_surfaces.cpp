@@ -10,6 +10,8 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <Geom_Surface.hxx>
 
 #include <cmath>
 #include <functional>
@@ -159,6 +161,73 @@ TEST(SurfaceFit, ASaddleIsABSplineCloseToItsPoints)
     EXPECT_NEAR(surfaceDistance(f, Eigen::Vector3d(5.0, 0.0, 0.0)), 25.0 / 40.0, 0.05);
 }
 
+TEST(SurfaceFit, TheSignedDistanceIsPositiveWhereTheSurfacesNormalPoints)
+{
+    // For each kind, points moved off makeSurface()'s surface along its own unit normal by t
+    // are at signed distance t (the height field's vertical distance: t over the cosine of the
+    // slope, so the same sign and within 10 % on this gentle saddle).
+    std::vector<FittedSurface> surfaces(5);
+    surfaces[0].kind = SurfaceKind::Plane;
+    surfaces[0].origin = Eigen::Vector3d(1.0, 2.0, 3.0);
+    surfaces[0].axis = Eigen::Vector3d(0.2, -0.3, 1.0).normalized();
+    surfaces[1].kind = SurfaceKind::Sphere;
+    surfaces[1].radius = 7.0;
+    surfaces[2].kind = SurfaceKind::Cylinder;
+    surfaces[2].axis = Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
+    surfaces[2].radius = 5.0;
+    surfaces[3].kind = SurfaceKind::Cone;
+    surfaces[3].radius = 6.0;
+    surfaces[3].halfAngle = -0.4;
+    surfaces[4].kind = SurfaceKind::Torus;
+    surfaces[4].radius = 12.0;
+    surfaces[4].minorRadius = 3.0;
+    {
+        std::mt19937 rng(21);
+        std::uniform_real_distribution<double> u(-10.0, 10.0);
+        PointMatrix P(600, 3);
+        for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            const double x = u(rng);
+            const double y = u(rng);
+            P.row(i) << x, y, (x * x - y * y) / 80.0;
+        }
+        surfaces.push_back(fitSurface(P, 1.0));
+        ASSERT_EQ(surfaces.back().kind, SurfaceKind::BSpline);
+    }
+    for (const FittedSurface& f : surfaces) {
+        SCOPED_TRACE(surfaceKindName(f.kind));
+        const Handle(Geom_Surface) surface = makeSurface(f);
+        Standard_Real u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
+        surface->Bounds(u0, u1, v0, v1);
+        // Planes, cylinders and cones are unbounded in v: a window about the origin.
+        v0 = std::max(v0, -5.0);
+        v1 = std::min(v1, 5.0);
+        u0 = std::max(u0, -5.0);
+        u1 = std::min(u1, 5.0);
+        for (int i = 1; i < 5; ++i) {
+            for (int j = 1; j < 5; ++j) {
+                const double u = u0 + (u1 - u0) * i / 5.0;
+                const double v = v0 + (v1 - v0) * j / 5.0;
+                GeomLProp_SLProps props(surface, u, v, 1, 1e-9);
+                ASSERT_TRUE(props.IsNormalDefined());
+                const gp_Pnt p = props.Value();
+                const gp_Dir n = props.Normal();
+                for (double t : {-0.3, 0.2}) {
+                    const Eigen::Vector3d x(p.X() + t * n.X(), p.Y() + t * n.Y(),
+                                            p.Z() + t * n.Z());
+                    const double d = signedSurfaceDistance(f, x);
+                    if (f.kind == SurfaceKind::BSpline) {
+                        EXPECT_GT(d * t, 0.0);
+                        EXPECT_NEAR(d, t, 0.1 * std::abs(t));
+                    } else {
+                        EXPECT_NEAR(d, t, 1e-6);
+                    }
+                    EXPECT_NEAR(surfaceDistance(f, x), std::abs(d), 1e-12);
+                }
+            }
+        }
+    }
+}
+
 TEST(SurfaceFit, BadPatchesAreNamed)
 {
     PointMatrix few(5, 3);
@@ -222,6 +291,40 @@ TEST(PatchSurfaces, ANoisyBoxStillGivesAValidSolid)
     ASSERT_TRUE(out.solid);
     EXPECT_TRUE(out.valid);
     EXPECT_NEAR(volumeOf(out.shape), edge * edge * edge, 0.02 * edge * edge * edge);
+}
+
+TEST(PatchSurfaces, APointsDeviationIsItsNoiseAlongTheOutwardNormal)
+{
+    // The noisy box of the test above: a point moved by t along its face's outward normal lies
+    // t from the fitted plane on the outer side of the solid's face (the plane passes through
+    // the face's points on average, a few hundredths of a spacing from the true face).
+    const double edge = 30.0;
+    const shapes::Sample clean = shapes::cube(edge, 1.0, 8);
+    shapes::Sample s = clean;
+    shapes::addNormalNoise(s, 0.3, 9);
+    const ExtractionResult result = extractFeatureLines(s.points);
+    const PatchSurfaces out = surfacesOfExtraction(s.points, result);
+    ASSERT_TRUE(out.solid);
+    int checked = 0;
+    int close = 0;
+    for (const PatchFace& pf : out.faces) {
+        ASSERT_FALSE(pf.face.IsNull());
+        ASSERT_EQ(pf.deviations.size(), static_cast<size_t>(pf.points));
+        // The patch's points in the order of the cloud's rows.
+        size_t k = 0;
+        for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+            if (result.patch[static_cast<size_t>(i)] != pf.patch) {
+                continue;
+            }
+            const double t = (s.points.row(i) - clean.points.row(i)).dot(clean.normals.row(i));
+            close += std::abs(pf.deviations[k] - t) < 0.05 ? 1 : 0;
+            ++checked;
+            ++k;
+        }
+        EXPECT_EQ(k, pf.deviations.size());
+    }
+    EXPECT_GT(checked, s.points.rows() / 2);
+    EXPECT_GT(close, 0.95 * checked);
 }
 
 TEST(PatchSurfaces, ACylinderWithFlatEndsIsACylinderOfItsRadiusAndTwoPlanes)
