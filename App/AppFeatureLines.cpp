@@ -94,7 +94,7 @@ PyMOD_INIT_FUNC(FeatureLines)
     }
     FeatureLines::PropertyPointIndices::init();
     FeatureLines::Extraction::init();
-    FeatureLines::Surfaces::init();
+    FeatureLines::PatchSurfaces::init();
     PyObject* mod = Base::Interpreter().addModule(new FeatureLines::Module);
     // Lives as long as the process, as the module does.
     App::GetApplication().signalStartSaveDocument.connect(&FeatureLines::warnOnSaving);

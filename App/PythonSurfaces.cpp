@@ -40,10 +40,12 @@ void Module::addSurfaceFunctions()
         "makePatchClouds does.");
     add_keyword_method(
         "makeSurfaces", &Module::makeSurfaces,
-        "makeSurfaces(extraction, name='Surfaces', min_points=0) -> FeatureLines::Surfaces\n"
+        "makeSurfaces(extraction, name='Surfaces', min_points=0) -> FeatureLines::PatchSurfaces\n"
         "The parametric object of fitSurfaces: its Source is the extraction, and a recompute\n"
         "fits, trims and sews the faces again when the lines change (FaceKinds,\n"
-        "FaceRmsDeviations, FaceMaxDeviations, Problems, IsSolid, IsValid, SewingTolerance).\n"
+        "FaceRmsDeviations, FaceMaxDeviations, Problems, IsSolid, IsValid, SewingTolerance,\n"
+        "PointDeviations: per point of the cloud its signed distance from its face, NaN off\n"
+        "the faces; the view colours the faces by it).\n"
         "A recompute that makes no face fails with the reason and keeps the faces before.\n"
         "Recompute the document to compute it.");
 }
@@ -66,7 +68,8 @@ Py::Object Module::makeSurfaces(const Py::Tuple& args, const Py::Dict& keywords)
         throw Py::ValueError("makeSurfaces: min_points must be 0 or more, got " +
                              std::to_string(minPoints));
     }
-    auto* obj = static_cast<Surfaces*>(e->getDocument()->addObject("FeatureLines::Surfaces", name));
+    auto* obj = static_cast<PatchSurfaces*>(
+        e->getDocument()->addObject("FeatureLines::PatchSurfaces", name));
     obj->Source.setValue(e);
     obj->MinPoints.setValue(minPoints);
     return Py::asObject(obj->getPyObject());

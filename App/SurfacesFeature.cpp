@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// FeatureLines::Surfaces and the gathering of an extraction's patches for the surface fits.
+// FeatureLines::PatchSurfaces and the gathering of an extraction's patches for the surface fits.
 #include <FCConfig.h>
 
 #include <Mod/Points/App/PointsFeature.h>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -36,7 +37,8 @@ std::map<long, std::vector<TopoDS_Wire>> borderWires(const Extraction& e)
 } // namespace
 
 featurelines::surfaces::PatchSurfaces surfacesOf(const Extraction& e, int minPoints,
-                                                 const std::string& caller)
+                                                 const std::string& caller,
+                                                 std::vector<double>* pointDeviations)
 {
     requireCurrentResult(e, caller);
     if (minPoints <= 0) {
@@ -72,12 +74,23 @@ featurelines::surfaces::PatchSurfaces surfacesOf(const Extraction& e, int minPoi
             faces.back().problem = "patch " + std::to_string(id) + ": its border is not closed";
         }
     }
-    return featurelines::surfaces::sewPatchFaces(std::move(faces), spacing);
+    featurelines::surfaces::PatchSurfaces sewn =
+        featurelines::surfaces::sewPatchFaces(std::move(faces), spacing);
+    if (pointDeviations) {
+        pointDeviations->assign(patch.size(), std::numeric_limits<double>::quiet_NaN());
+        for (const featurelines::surfaces::PatchFace& f : sewn.faces) {
+            const std::vector<size_t>& rows = members.at(f.patch);
+            for (size_t r = 0; r < f.deviations.size() && r < rows.size(); ++r) {
+                (*pointDeviations)[rows[r]] = f.deviations[r];
+            }
+        }
+    }
+    return sewn;
 }
 
-PROPERTY_SOURCE(FeatureLines::Surfaces, Part::Feature)
+PROPERTY_SOURCE(FeatureLines::PatchSurfaces, Part::Feature)
 
-Surfaces::Surfaces()
+PatchSurfaces::PatchSurfaces()
 {
     ADD_PROPERTY_TYPE(Source, (nullptr), "Surfaces", App::Prop_None,
                       "The extraction whose patches get surfaces: a FeatureLines object.");
@@ -102,9 +115,13 @@ Surfaces::Surfaces()
                       "OpenCASCADE's check finds the sewn shape valid.");
     ADD_PROPERTY_TYPE(SewingTolerance, (0.0), "Result", output,
                       "The largest edge or vertex tolerance after sewing (mm).");
+    ADD_PROPERTY_TYPE(PointDeviations, (), "Result", output,
+                      "Per point of the cloud: its signed distance from its patch's surface, "
+                      "positive on the side the face's normal points to (out of a solid; mm); "
+                      "NaN for a point of no face.");
 }
 
-App::DocumentObjectExecReturn* Surfaces::execute()
+App::DocumentObjectExecReturn* PatchSurfaces::execute()
 {
     auto* extraction = dynamic_cast<Extraction*>(Source.getValue());
     if (!extraction) {
@@ -112,9 +129,10 @@ App::DocumentObjectExecReturn* Surfaces::execute()
             "Source must be a FeatureLines extraction (FeatureLines.makeExtraction)");
     }
     featurelines::surfaces::PatchSurfaces sewn;
+    std::vector<double> deviations;
     try {
         sewn = surfacesOf(*extraction, static_cast<int>(MinPoints.getValue()),
-                          std::string(Label.getValue()));
+                          std::string(Label.getValue()), &deviations);
     } catch (const std::exception& e) {
         return new App::DocumentObjectExecReturn(e.what());
     }
@@ -145,6 +163,7 @@ App::DocumentObjectExecReturn* Surfaces::execute()
     IsSolid.setValue(sewn.solid);
     IsValid.setValue(sewn.valid);
     SewingTolerance.setValue(sewn.tolerance);
+    PointDeviations.setValues(deviations);
     return App::DocumentObject::StdReturn;
 }
 

@@ -1,11 +1,14 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """From lines to surfaces in FreeCAD (issue 21, first step): FeatureLines.fitSurfaces on a
 recomputed extraction, and its parametric object FeatureLines.makeSurfaces, which follows the
-lines when they recompute, keeps its faces when a recompute fails, and is saved with them. A sampled box gives 6 planes sewn into a valid solid of the box's volume;
+lines when they recompute, keeps its faces when a recompute fails, and is saved with them;
+its PointDeviations give each point's signed distance from its face (a box's points moved
+along the outward normal by a known offset are that offset from their faces). A sampled box gives 6 planes sewn into a valid solid of the box's volume;
 the demo cloud gives the demo part's 7 planes, 6 cylinders and 1 torus, a valid solid, each face
 within a fraction of a spacing of its patch's points; a patch the lines leave open is reported
 with its reason, not a failure; a stale extraction is refused with a ValueError."""
 
+import math
 import os
 import unittest
 
@@ -160,6 +163,55 @@ class ParametricTest(unittest.TestCase):
             doc.recompute()
             self.assertIn("Source must be a FeatureLines extraction",
                           support.error_message(surfaces))
+        finally:
+            support.close_document(doc)
+
+
+def cube_normal(point):
+    """The outward unit normal of sampled_shapes.cube at a point of it: along the axis where
+    the point lies on a face."""
+    axis = max(range(3), key=lambda k: abs(point[k]))
+    n = [0.0, 0.0, 0.0]
+    n[axis] = 1.0 if point[axis] > 0 else -1.0
+    return tuple(n)
+
+
+class DeviationTest(unittest.TestCase):
+    def test_a_points_deviation_is_its_noise_along_the_outward_normal(self):
+        # Every point of a box moved along its face's outward normal by a known Gaussian
+        # offset t: its PointDeviations entry is t (the fitted planes pass through the
+        # faces' points on average, within hundredths of a spacing of the true faces), positive
+        # out of the solid; a point of no patch (on the lines) has NaN.
+        doc = support.new_document("SurfacesDeviation")
+        try:
+            clean = sampled_shapes.cube(EDGE, SPACING, 16)
+            sigma = 0.3 * SPACING
+            noisy = sampled_shapes.with_normal_noise(clean, cube_normal, sigma, 17)
+            offsets = [sum((a - b) * n for a, b, n in zip(q, p, cube_normal(p)))
+                       for p, q in zip(clean, noisy)]
+            cloud, lines = support.add_extraction(doc, noisy)
+            surfaces = FeatureLines.makeSurfaces(lines)
+            doc.recompute()
+            self.assertTrue(surfaces.IsSolid, list(surfaces.Problems))
+            deviations = list(surfaces.PointDeviations)
+            self.assertEqual(len(deviations), len(noisy))
+            patches = list(lines.PointPatch)
+            on_faces = [i for i, d in enumerate(deviations) if math.isfinite(d)]
+            self.assertTrue(all(patches[i] >= 0 for i in on_faces))
+            self.assertGreater(len(on_faces), len(noisy) // 2)
+            close = [i for i in on_faces if abs(deviations[i] - offsets[i]) < 0.1 * SPACING]
+            self.assertGreater(len(close), 0.95 * len(on_faces))
+            rms = math.sqrt(sum(deviations[i] ** 2 for i in on_faces) / len(on_faces))
+            self.assertAlmostEqual(rms, sigma, delta=0.1 * sigma)
+            # Saved and reopened with the deviations.
+            path = os.path.join(support.scratch_dir("surfaces"), "deviations.FCStd")
+            doc.saveAs(path)
+            name, object_name = doc.Name, surfaces.Name
+            FreeCAD.closeDocument(name)
+            doc = FreeCAD.openDocument(path)
+            again = list(doc.getObject(object_name).PointDeviations)
+            self.assertEqual(len(again), len(deviations))
+            self.assertEqual([again[i] for i in on_faces], [deviations[i] for i in on_faces])
         finally:
             support.close_document(doc)
 
