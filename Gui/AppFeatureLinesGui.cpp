@@ -14,6 +14,7 @@
 #include <QtGlobal>
 
 #include "ViewProviderExtraction.h"
+#include "ViewProviderPatchSurfaces.h"
 
 void CreateFeatureLinesCommands();
 
@@ -52,6 +53,7 @@ PyMOD_INIT_FUNC(FeatureLinesGui)
     }
     loadFeatureLinesResource();
     FeatureLinesGui::ViewProviderExtraction::init();
+    FeatureLinesGui::ViewProviderPatchSurfaces::init();
     CreateFeatureLinesCommands();
     PyObject* mod = Base::Interpreter().addModule(new FeatureLinesGui::Module);
     Base::Console().Log("Loading GUI of FeatureLines module... done\n");

@@ -6,6 +6,7 @@
 
 #include <App/Document.h>
 #include <App/PropertyUnits.h>
+#include <Base/Console.h>
 #include <Base/Exception.h>
 #include <Base/Type.h>
 #include <Gui/Application.h>
@@ -185,8 +186,9 @@ CmdFeatureLinesFitSurfaces::CmdFeatureLinesFitSurfaces()
     sToolTipText =
         QT_TR_NOOP("A surface for every patch of the selected feature lines whose border the\n"
                    "lines close (plane, sphere, cylinder, cone, torus, else a B-spline),\n"
-                   "trimmed by that border; the faces sewn, a solid where they close. The new\n"
-                   "Surfaces object follows the lines when they recompute.");
+                   "trimmed by that border; the faces sewn, a solid where they close, coloured\n"
+                   "by the scan's deviation from them. The new Surfaces object follows the\n"
+                   "lines when they recompute.");
     sWhatsThis = "FeatureLines_FitSurfaces";
     sStatusTip = sToolTipText;
 }
@@ -210,6 +212,13 @@ void CmdFeatureLinesFitSurfaces::activated(int)
         abortCommand();
         QMessageBox::warning(Gui::getMainWindow(), QObject::tr("No surfaces"),
                              QString::fromUtf8(e.what()));
+        return;
+    }
+    // The surfaces' panel: what was fitted, the deviations, what was left out and why.
+    try {
+        doCommand(Gui, "Gui.getDocument('%s').setEdit(_surfaces.Name)", doc);
+    } catch (const Base::Exception& e) {
+        Base::Console().Error("FeatureLines: %s\n", e.what());
     }
 }
 

@@ -8,6 +8,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 
+#include <App/Application.h>
 #include <App/Document.h>
 #include <Base/Console.h>
 #include <Base/Exception.h>
@@ -16,6 +17,7 @@
 #include <Gui/Command.h>
 #include <Gui/Control.h>
 #include <Gui/Document.h>
+#include <Gui/Selection.h>
 #include <Gui/TaskView/TaskView.h>
 #include <Mod/Points/App/PointsFeature.h>
 
@@ -334,6 +336,7 @@ void TaskExtraction::connectWidgets()
     connect(t.buttonHigher, &QPushButton::clicked, this, [this] { stepCandidate(true); });
     connect(t.buttonBack, &QPushButton::clicked, this, [this] { backToLines(); });
     connect(t.buttonDone, &QPushButton::clicked, this, [this] { done(); });
+    connect(t.buttonFitSurfaces, &QPushButton::clicked, this, [this] { doneFitSurfaces(); });
     connect(t.buttonHelp, &QPushButton::toggled, t.labelHelp, &QLabel::setVisible);
     connect(t.buttonAddLower, &QPushButton::clicked, this, [this] { addThreshold(false); });
     connect(t.buttonAddHigher, &QPushButton::clicked, this, [this] { addThreshold(true); });
@@ -806,6 +809,23 @@ void TaskExtraction::done()
 {
     // Closing deletes this dialog and its buttons: not from inside the button's own signal.
     QTimer::singleShot(0, &Gui::Control(), [] { Gui::Control().accept(); });
+}
+
+void TaskExtraction::doneFitSurfaces()
+{
+    // As done(), then the command Fit surfaces on this object once the panel is closed.
+    const std::string doc = documentName;
+    const std::string name = object.getObjectName();
+    QTimer::singleShot(0, &Gui::Control(), [doc, name] {
+        Gui::Control().accept();
+        App::Document* d = App::GetApplication().getDocument(doc.c_str());
+        if (!d || !d->getObject(name.c_str()) || Gui::Control().activeDialog()) {
+            return;
+        }
+        Gui::Selection().clearSelection();
+        Gui::Selection().addSelection(doc.c_str(), name.c_str());
+        Gui::Application::Instance->commandManager().runCommandByName("FeatureLines_FitSurfaces");
+    });
 }
 
 // ---- The document ---------------------------------------------------------------------------

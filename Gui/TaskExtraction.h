@@ -142,6 +142,8 @@ private:
     void addThreshold(bool higher);
     void chooseValue(double value);
     void done();
+    /// Done, then the surfaces of the lines' patches (the command Fit surfaces) and their panel.
+    void doneFitSurfaces();
 
     /// ThresholdMode = Explicit and the accepted thresholds, then a recompute: macro lines.
     void writeThresholds();

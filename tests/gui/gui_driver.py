@@ -293,7 +293,13 @@ def check_panel_fits(what):
     lies whole within the task view's visible width, a button or box at least as wide as its
     text needs, and the histogram at least 150 pixels wide (its ticks and labels readable).
     `what` names the moment in the messages."""
-    viewport = thresholds_panel()
+    check_panel_fits_widget(thresholds_panel(), what)
+
+
+def check_panel_fits_widget(anchor, what):
+    """check_panel_fits for the task panel that holds the widget `anchor`; a table in it must
+    fit too, at least 150 pixels wide."""
+    viewport = anchor
     while viewport is not None and viewport.objectName() != "qt_scrollarea_viewport":
         viewport = viewport.parentWidget()
     check(viewport is not None, "the task panel is in no scroll area")
@@ -301,7 +307,7 @@ def check_panel_fits(what):
     width = viewport.width()
     checked = 0
     for w in content:
-        histogram = w.objectName() == "histogram"
+        histogram = w.objectName() == "histogram" or isinstance(w, QtWidgets.QTableView)
         if not (histogram or isinstance(w, _PANEL_WIDGETS)) or not w.isVisible():
             continue
         if isinstance(w, QtWidgets.QLabel) and not w.text():
@@ -318,7 +324,7 @@ def check_panel_fits(what):
                   "%s: %s is %d px wide, its text needs %d" % (what, name, w.width(),
                                                                w.minimumSizeHint().width()))
         if histogram:
-            check(w.width() >= 150, "%s: the histogram is only %d px wide" % (what, w.width()))
+            check(w.width() >= 150, "%s: %s is only %d px wide" % (what, name, w.width()))
         checked += 1
     check(checked >= 5, "%s: only %d widgets of the panel are visible" % (what, checked))
     log("%s: %d widgets within the %d px panel" % (what, checked, width))

@@ -106,7 +106,11 @@ def surfaces():
     FreeCADGui.Selection.addSelection(lines)
     FreeCADGui.runCommand("FeatureLines_FitSurfaces")
     g.settle()
-    made = [o for o in doc.Objects if o.TypeId == "FeatureLines::Surfaces"]
+    # The command opens the surfaces' panel (tests/gui/test_surfaces_panel.py): OK closes it.
+    g.check(g.panel_is_open(), "the surfaces' task panel is open")
+    g.press_dialog_button("ok")
+    g.settle()
+    made = [o for o in doc.Objects if o.TypeId == "FeatureLines::PatchSurfaces"]
     g.check(len(made) == 1, "the command made one Surfaces object: %s" % made)
     feature = made[0]
     g.check(feature.Source == lines, "its source is the selected lines")
@@ -127,6 +131,8 @@ def surfaces():
                for face in feature.Shape.Faces]
     g.check(sorted(names.get(type(f.Surface).__name__, "bspline") for f in feature.Shape.Faces)
             == sorted(kinds), "the sewn faces keep their kinds")
+    # Part's Flat Lines mode with a colour per face (the default mode colours by deviation).
+    feature.ViewObject.DisplayMode = "Flat Lines"
     feature.ViewObject.DiffuseColor = by_face
     state["cloud"].ViewObject.Visibility = False
     lines.ViewObject.Visibility = False
