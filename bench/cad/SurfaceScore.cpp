@@ -3,6 +3,8 @@
 // by BRepExtrema.
 #include "SurfaceScore.h"
 
+#include "RandomBenchmark.h"
+
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -17,6 +19,8 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
+#include <sstream>
+#include <stdexcept>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -211,6 +215,82 @@ SurfaceQuality measureSurfaces(const surfaces::PatchSurfaces& fitted, const Topo
     }
     meanAndP95(from, spacing, q.fromTruthMean, q.fromTruthP95);
     return q;
+}
+
+double SurfaceTotals::rightKindShare() const
+{
+    return trueFaces > 0 ? static_cast<double>(rightKind) / trueFaces
+                         : std::numeric_limits<double>::quiet_NaN();
+}
+
+SurfaceTotals surfaceTotals(const std::vector<SurfaceQuality>& parts)
+{
+    SurfaceTotals t;
+    double sum = 0.0;
+    int withFaces = 0;
+    for (const SurfaceQuality& q : parts) {
+        ++t.parts;
+        t.validSolids += q.solid && q.valid ? 1 : 0;
+        t.trueFaces += q.trueFaces;
+        t.rightKind += q.rightKind;
+        if (std::isfinite(q.toTruthMean)) {
+            sum += q.toTruthMean;
+            ++withFaces;
+        }
+    }
+    if (withFaces > 0) {
+        t.toTruthMean = sum / withFaces;
+    }
+    return t;
+}
+
+SurfaceFloors parseSurfaceFloors(const std::string& text)
+{
+    SurfaceFloors floors;
+    std::stringstream items(text);
+    std::string item;
+    while (std::getline(items, item, ',')) {
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos) {
+            throw std::invalid_argument("--surface-floor expects name=value, not \"" + item +
+                                        "\".");
+        }
+        const std::string name = item.substr(0, eq);
+        const double value = parseNumber(item.substr(eq + 1), "--surface-floor " + name);
+        if (name == "kinds") {
+            floors.kinds = value;
+        } else if (name == "solids") {
+            floors.solids = value;
+        } else if (name == "truth") {
+            floors.toTruth = value;
+        } else {
+            throw std::invalid_argument("--surface-floor knows kinds, solids and truth, not \"" +
+                                        name + "\".");
+        }
+    }
+    return floors;
+}
+
+std::vector<std::string> surfaceFloorFailures(const SurfaceTotals& totals,
+                                              const SurfaceFloors& floors)
+{
+    std::vector<std::string> failures;
+    const double share = totals.rightKindShare();
+    if (!std::isnan(floors.kinds) && !(share >= floors.kinds)) {
+        failures.push_back("the share of true faces of their kind " + formatNumber(share) +
+                           " is below its floor " + formatNumber(floors.kinds) + ".");
+    }
+    if (!std::isnan(floors.solids) && !(totals.validSolids >= floors.solids)) {
+        failures.push_back(std::to_string(totals.validSolids) +
+                           " valid solids are fewer than the floor's " +
+                           formatNumber(floors.solids, 0) + ".");
+    }
+    if (!std::isnan(floors.toTruth) && !(totals.toTruthMean <= floors.toTruth)) {
+        failures.push_back("the faces' mean distance to the truth " +
+                           formatNumber(totals.toTruthMean, 3) + " spacing is above its limit " +
+                           formatNumber(floors.toTruth, 3) + ".");
+    }
+    return failures;
 }
 
 } // namespace featurelines::bench

@@ -7,6 +7,9 @@
 #include <TopoDS_Shape.hxx>
 
 #include <array>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "PatchSurfaces.h"
 
@@ -36,6 +39,39 @@ struct SurfaceQuality
     /// Seconds to fit and sew the surfaces.
     double seconds = 0.0;
 };
+
+/// A run's surfaces over its parts: what the surfaces' floors (--surface-floor) judge.
+struct SurfaceTotals
+{
+    int parts = 0;
+    /// Parts whose faces closed into one valid solid.
+    int validSolids = 0;
+    int trueFaces = 0;
+    int rightKind = 0;
+    /// The mean over the parts with faces of their mean distance to the truth (spacings);
+    /// NaN without faces.
+    double toTruthMean = std::numeric_limits<double>::quiet_NaN();
+
+    /// rightKind / trueFaces; NaN without true faces.
+    double rightKindShare() const;
+};
+SurfaceTotals surfaceTotals(const std::vector<SurfaceQuality>& parts);
+
+/// The least acceptable share of true faces of their kind and count of valid solids, and the
+/// largest acceptable mean distance to the truth (spacings); NaN: not judged.
+struct SurfaceFloors
+{
+    double kinds = std::numeric_limits<double>::quiet_NaN();
+    double solids = std::numeric_limits<double>::quiet_NaN();
+    double toTruth = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// "kinds=0.49,solids=5,truth=0.07" (any subset). Throws std::invalid_argument otherwise.
+SurfaceFloors parseSurfaceFloors(const std::string& text);
+
+/// One sentence per measure past its floor (a NaN measure is past it), empty when all pass.
+std::vector<std::string> surfaceFloorFailures(const SurfaceTotals& totals,
+                                              const SurfaceFloors& floors);
 
 /// Scores `surfaces` (fitted to `cloud`, a sampling of `truth`, whose mean spacing is `spacing`)
 /// against the true shape: up to `samples` points each way.

@@ -144,6 +144,8 @@ struct Arguments
     std::vector<std::uint32_t> randomSeeds;
     /// --floor: lowest acceptable means over the random parts (exit 1 below).
     RandomFloors floors;
+    /// --surface-floor: the surfaces' floors (exit 1 past one).
+    SurfaceFloors surfaceFloors;
     /// When > 0: sampling radius as this fraction of the part's bounding-box diagonal
     /// (overrides `points`).
     double spacingFraction = 0.0;
@@ -198,7 +200,11 @@ const char* usage =
     "  --no-line-placement     leave the smooth lines where the curvature's levels put\n"
     "                          them (no fit of the curvature step)\n"
     "  --surfaces              also fit the patches' surfaces, sew them and measure them\n"
-    "                          against the true B-rep (a table of its own)\n";
+    "                          against the true B-rep (a table of its own)\n"
+    "  --surface-floor kinds=F,solids=N,truth=D\n"
+    "                          with --surfaces: exit 1 when the share of true faces of their\n"
+    "                          kind is below F, the valid solids fewer than N, or the faces'\n"
+    "                          mean distance to the truth above D spacings\n";
 
 /// Each point of `cloud` kept with probability `share` (seeded); all of them at share 1.
 SampledCloud keptAtRandom(SampledCloud cloud, double share, unsigned seed)
@@ -283,6 +289,8 @@ Arguments parseArguments(int argc, char** argv)
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
         } else if (opt == "--surfaces") {
             a.surfaces = true;
+        } else if (opt == "--surface-floor") {
+            a.surfaceFloors = parseSurfaceFloors(value());
         } else if (opt == "--no-line-placement") {
             extractionOptions.smooth.placeCoarseLines = false;
             extractionOptions.smooth.placeOwnScaleLines = false;
@@ -300,6 +308,13 @@ Arguments parseArguments(int argc, char** argv)
                             !std::isnan(a.floors.closedness);
     if (floorGiven && a.randomSeeds.empty()) {
         throw std::invalid_argument("--floor applies to the random parts: give --random too.");
+    }
+    const bool surfaceFloorGiven = !std::isnan(a.surfaceFloors.kinds) ||
+                                   !std::isnan(a.surfaceFloors.solids) ||
+                                   !std::isnan(a.surfaceFloors.toTruth);
+    if (surfaceFloorGiven && !a.surfaces) {
+        throw std::invalid_argument("--surface-floor applies to the surfaces: give --surfaces "
+                                    "too.");
     }
     if (a.spacingFraction < 0.0 || a.spacingFraction > 0.1) {
         throw std::invalid_argument("--spacing-fraction must lie between 0 and 0.1.");
@@ -1042,9 +1057,16 @@ void printCurveQuality(const Results& results, bool markdown)
 }
 
 /// --surfaces: per part, the patch faces by kind, the sewn shape, its distances to the true
-/// B-rep and the true faces recovered with their kind; then the means.
-void printSurfaceQuality(const Results& results, bool markdown)
+/// B-rep and the true faces recovered with their kind; then the means. Returns the totals.
+SurfaceTotals printSurfaceQuality(const Results& results, bool markdown)
 {
+    std::vector<SurfaceQuality> measured;
+    for (const Row& r : results.rows) {
+        if (r.surfaces) {
+            measured.push_back(*r.surfaces);
+        }
+    }
+    const SurfaceTotals totals = surfaceTotals(measured);
     std::vector<std::vector<std::string>> table;
     int parts = 0;
     int solids = 0;
@@ -1081,7 +1103,7 @@ void printSurfaceQuality(const Results& results, bool markdown)
              formatNumber(q.seconds, 1)});
     }
     if (table.empty()) {
-        return;
+        return totals;
     }
     auto mean = [](const std::vector<double>& v) { return v.empty() ? NAN : meanOf(v); };
     table.push_back({"mean", "", "", "", "", "", "", "", "",
@@ -1097,6 +1119,17 @@ void printSurfaceQuality(const Results& results, bool markdown)
                 "bspline", "shape", "to truth mean", "to truth p95", "from truth mean",
                 "from truth p95", "true faces of their kind", "fit s"},
                table, markdown);
+    return totals;
+}
+
+/// The surfaces' floors' verdict: one line per failure; true when all pass.
+bool surfaceFloorsPass(const SurfaceTotals& totals, const SurfaceFloors& floors)
+{
+    const std::vector<std::string> failures = surfaceFloorFailures(totals, floors);
+    for (const std::string& f : failures) {
+        std::cout << "below the surfaces' floor: " << f << "\n";
+    }
+    return failures.empty();
 }
 
 void printSweeps(const Results& results, bool markdown)
@@ -1246,7 +1279,7 @@ int runRandom(const Arguments& args)
     }
     printLineQuality(results, args.markdown);
     printCurveQuality(results, args.markdown);
-    printSurfaceQuality(results, args.markdown);
+    const SurfaceTotals surfaces = printSurfaceQuality(results, args.markdown);
     for (const TextTable& table : randomAggregateTables(records)) {
         printTextTable(table, args.markdown);
     }
@@ -1258,7 +1291,8 @@ int runRandom(const Arguments& args)
     for (const std::string& f : failures) {
         std::cout << "below the floor: " << f << "\n";
     }
-    return failures.empty() ? 0 : 1;
+    const bool surfacesPass = surfaceFloorsPass(surfaces, args.surfaceFloors);
+    return failures.empty() && surfacesPass ? 0 : 1;
 }
 
 int run(const Arguments& args)
@@ -1298,12 +1332,12 @@ int run(const Arguments& args)
     printScores(results, args.markdown);
     printLineQuality(results, args.markdown);
     printCurveQuality(results, args.markdown);
-    printSurfaceQuality(results, args.markdown);
+    const SurfaceTotals surfaces = printSurfaceQuality(results, args.markdown);
     printSweeps(results, args.markdown);
     if (!args.demoCloud.empty()) {
         writeDemoCloud(args);
     }
-    return 0;
+    return surfaceFloorsPass(surfaces, args.surfaceFloors) ? 0 : 1;
 }
 
 } // namespace
