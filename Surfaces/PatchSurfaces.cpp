@@ -16,6 +16,7 @@
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Result.hxx>
 #include <BRepClass_FaceClassifier.hxx>
+#include <BRepFill_Filling.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -27,6 +28,7 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomLProp_SLProps.hxx>
 #include <gp_Ax3.hxx>
+#include <gp_Vec.hxx>
 #include <gp_Pnt2d.hxx>
 #include <Precision.hxx>
 #include <ShapeAnalysis_ShapeTolerance.hxx>
@@ -445,6 +447,89 @@ std::string checkProblems(const TopoDS_Shape& shape)
 
 } // namespace
 
+namespace {
+
+/// The signed distances of `points` from `face`'s surface along its normal (turned with the
+/// face's orientation), by projection: for a surface that is no FittedSurface (the plate).
+std::vector<double> projectedDeviations(const TopoDS_Face& face, const PointMatrix& points)
+{
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    Standard_Real u0 = 0.0, u1 = 0.0, v0 = 0.0, v1 = 0.0;
+    surface->Bounds(u0, u1, v0, v1);
+    GeomAPI_ProjectPointOnSurf projection;
+    projection.Init(surface, u0, u1, v0, v1);
+    const double sign = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+    std::vector<double> out(static_cast<size_t>(points.rows()),
+                            std::numeric_limits<double>::quiet_NaN());
+    for (Eigen::Index i = 0; i < points.rows(); ++i) {
+        const gp_Pnt x(points(i, 0), points(i, 1), points(i, 2));
+        projection.Perform(x);
+        if (projection.NbPoints() == 0) {
+            continue;
+        }
+        double u = 0.0;
+        double v = 0.0;
+        projection.LowerDistanceParameters(u, v);
+        GeomLProp_SLProps props(surface, u, v, 1, 1e-9);
+        const gp_Pnt foot = props.Value();
+        double d = projection.LowerDistance();
+        if (props.IsNormalDefined()) {
+            const gp_Dir n = props.Normal();
+            d = gp_Vec(foot, x).Dot(gp_Vec(n));
+        }
+        out[static_cast<size_t>(i)] = sign * d;
+    }
+    return out;
+}
+
+/// A B-spline patch's face as OpenCASCADE's plate: BRepFill_Filling through the edges of its
+/// one border wire (C0: the face keeps the network's edges) and up to 300 of its points; null
+/// for a border with holes or where the plate cannot be built or is not a valid face.
+TopoDS_Face plateFace(const std::vector<TopoDS_Wire>& wires, const PointMatrix& points,
+                      double spacing)
+{
+    if (wires.size() != 1) {
+        return TopoDS_Face();
+    }
+    try {
+        BRepFill_Filling filling(3, 15, 2, Standard_False, 1e-5, 0.01 * spacing);
+        for (BRepTools_WireExplorer it(wires.front()); it.More(); it.Next()) {
+            filling.Add(it.Current(), GeomAbs_C0, Standard_True);
+        }
+        const Eigen::Index step = std::max<Eigen::Index>(1, points.rows() / 300);
+        for (Eigen::Index i = 0; i < points.rows(); i += step) {
+            filling.Add(gp_Pnt(points(i, 0), points(i, 1), points(i, 2)));
+        }
+        filling.Build();
+        if (!filling.IsDone()) {
+            return TopoDS_Face();
+        }
+        const TopoDS_Face face = filling.Face();
+        return !face.IsNull() && checkProblems(face).empty() ? face : TopoDS_Face();
+    } catch (const Standard_Failure&) {
+        return TopoDS_Face();
+    }
+}
+
+/// The RMS and largest of finite `d`; infinite without any.
+std::pair<double, double> rmsAndLargest(const std::vector<double>& d)
+{
+    double sum = 0.0;
+    double largest = 0.0;
+    int n = 0;
+    for (double x : d) {
+        if (std::isfinite(x)) {
+            sum += x * x;
+            largest = std::max(largest, std::abs(x));
+            ++n;
+        }
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    return n > 0 ? std::pair{std::sqrt(sum / n), largest} : std::pair{inf, inf};
+}
+
+} // namespace
+
 Handle(Geom_Surface) makeSurface(const FittedSurface& s)
 {
     switch (s.kind) {
@@ -520,12 +605,28 @@ PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<T
             pf.face = trimmedFace(surface, wires, points, 0.01 * spacing,
                                   options.sewingTolerance * spacing);
         }
-        const std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
+        std::string check = pf.face.IsNull() ? "no face" : checkProblems(pf.face);
+        if (pf.surface.kind == SurfaceKind::BSpline && options.bspline == BSplineFace::Plate) {
+            const TopoDS_Face plate = plateFace(wires, points, spacing);
+            if (!plate.IsNull()) {
+                pf.deviations = projectedDeviations(plate, points);
+                const auto [rms, largest] = rmsAndLargest(pf.deviations);
+                pf.face = plate;
+                pf.plate = true;
+                pf.surface.rmsDeviation = rms;
+                pf.surface.maxDeviation = largest;
+                check.clear();
+            } else {
+                check = "no plate through the border and the points";
+            }
+        }
         if (!check.empty()) {
             pf.problem = name + ": OpenCASCADE made no valid face of its " +
                          surfaceKindName(pf.surface.kind) + " and border (" + check + ")";
             pf.face.Nullify();
-        } else {
+            pf.plate = false;
+            pf.deviations.clear();
+        } else if (!pf.plate) {
             const double sign = pf.face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
             pf.deviations.resize(static_cast<size_t>(points.rows()));
             for (Eigen::Index i = 0; i < points.rows(); ++i) {

@@ -20,9 +20,23 @@
 
 namespace featurelines::surfaces {
 
+/// How a patch that no plane, sphere, cylinder, cone or torus fits gets its B-spline face.
+/// Measured on the benchmark's parts (docs/ACCURACY.md, "B-spline faces"): the plate lies
+/// farther from the true faces wherever both are made, and makes no face the height field
+/// does not; it stays for that comparison.
+enum class BSplineFace
+{
+    /// The height field over the patch's plane trimmed by the border (fitSurface's).
+    HeightField,
+    /// OpenCASCADE's plate (BRepFill_Filling) through the border's edges and up to 300 of
+    /// the points: a face on the network's own edges.
+    Plate,
+};
+
 struct PatchSurfaceOptions
 {
     SurfaceFitOptions fit;
+    BSplineFace bspline = BSplineFace::HeightField;
     /// Sewing tolerance, x spacing: edges of two faces this close are one (1).
     double sewingTolerance = 1.0;
 };
@@ -37,6 +51,10 @@ struct PatchFace
     /// it is in the sewn shape (its orientation there).
     TopoDS_Face face;
     std::string problem;
+    /// A B-spline face made as OpenCASCADE's plate (BSplineFace::Plate), not the height field
+    /// `surface` describes; its RMS and largest deviations are then the plate's (the points'
+    /// distances along its normal, by projection).
+    bool plate = false;
     /// Per point of the patch, in the order given: its signed distance from the surface,
     /// positive on the side the face's normal points to (out of the solid where the faces
     /// close into one); empty without a face.

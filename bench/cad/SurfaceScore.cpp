@@ -147,6 +147,7 @@ SurfaceQuality measureSurfaces(const surfaces::PatchSurfaces& fitted, const Topo
         if (!f.face.IsNull()) {
             ++q.faces;
             ++q.kinds[static_cast<size_t>(f.surface.kind)];
+            q.plates += f.plate ? 1 : 0;
         }
     }
     q.solid = fitted.solid;

@@ -21,6 +21,8 @@ struct SurfaceQuality
     int patches = 0;
     int faces = 0;
     std::array<int, 6> kinds{};
+    /// Of the B-spline faces, those made as OpenCASCADE's plate (PatchFace::plate).
+    int plates = 0;
     /// The faces closed into one solid, and BRepCheck finds it valid.
     bool solid = false;
     bool valid = false;

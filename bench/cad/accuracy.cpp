@@ -7,6 +7,8 @@
 // --random, the random parts instead (PartFamilies.h), each sampled by its drawn scanner model
 // (ScanSampling.h) and aggregated per family, model and noise (RandomBenchmark.h). Method and
 // results: docs/ACCURACY.md.
+#include <BRepTools.hxx>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -146,6 +148,8 @@ struct Arguments
     RandomFloors floors;
     /// --surface-floor: the surfaces' floors (exit 1 past one).
     SurfaceFloors surfaceFloors;
+    /// --bspline: how a patch no analytic surface fits gets its face.
+    featurelines::surfaces::BSplineFace bspline = featurelines::surfaces::BSplineFace::HeightField;
     /// When > 0: sampling radius as this fraction of the part's bounding-box diagonal
     /// (overrides `points`).
     double spacingFraction = 0.0;
@@ -184,7 +188,8 @@ const char* usage =
     "  --keep F                keep each sampled point with probability F (default 1): an\n"
     "                          irregular sampling, as of a thinned or patchy scan\n"
     "  --seed S                seed of sampling, thinning and noise (default 1)\n"
-    "  --write DIR             write DIR/<part>-<clean|noisy>/cloud.xyz and truth.json\n"
+    "  --write DIR             write DIR/<part>-<clean|noisy>/cloud.xyz, truth.json (the true\n"
+    "                          edges) and truth.brep (the part)\n"
     "                          (random parts: DIR/random-<seed>/)\n"
     "  --lines DIR             also score DIR/<part>-<clean|noisy>/lines.json (the lines JSON\n"
     "                          of any detector, e.g. the featurelines CLI run on cloud.xyz)\n"
@@ -201,6 +206,9 @@ const char* usage =
     "                          them (no fit of the curvature step)\n"
     "  --surfaces              also fit the patches' surfaces, sew them and measure them\n"
     "                          against the true B-rep (a table of its own)\n"
+    "  --bspline M             with --surfaces: a patch no analytic surface fits gets the\n"
+    "                          B-spline height field (heightfield, the default) or\n"
+    "                          OpenCASCADE's plate through its border and points (plate)\n"
     "  --surface-floor kinds=F,solids=N,truth=D\n"
     "                          with --surfaces: exit 1 when the share of true faces of their\n"
     "                          kind is below F, the valid solids fewer than N, or the faces'\n"
@@ -289,6 +297,17 @@ Arguments parseArguments(int argc, char** argv)
             extractionOptions.smooth.scales.maxScale = parseNumber(value(), opt);
         } else if (opt == "--surfaces") {
             a.surfaces = true;
+        } else if (opt == "--bspline") {
+            const std::string v = value();
+            using featurelines::surfaces::BSplineFace;
+            if (v == "heightfield") {
+                a.bspline = BSplineFace::HeightField;
+            } else if (v == "plate") {
+                a.bspline = BSplineFace::Plate;
+            } else {
+                throw std::invalid_argument("--bspline is heightfield or plate, not \"" + v +
+                                            "\".");
+            }
         } else if (opt == "--surface-floor") {
             a.surfaceFloors = parseSurfaceFloors(value());
         } else if (opt == "--no-line-placement") {
@@ -566,14 +585,19 @@ void writeXyz(const std::string& path, const PointMatrix& P, int digits)
     }
 }
 
-/// --write: the cloud and its truth as DIR/<caseName>/cloud.xyz and truth.json.
+/// --write: the cloud and its truth as DIR/<caseName>/cloud.xyz, truth.json (the true edges)
+/// and truth.brep (the part's B-rep, which the surfaces are measured against).
 void writeCase(const std::string& writeDir, const std::string& caseName, const PointMatrix& points,
-               const std::vector<TypedPolyline>& truth, const std::string& shape, double spacing)
+               const std::vector<TypedPolyline>& truth, const std::string& shape, double spacing,
+               const TopoDS_Shape& part)
 {
     const std::filesystem::path dir = std::filesystem::path(writeDir) / caseName;
     std::filesystem::create_directories(dir);
     writeXyz((dir / "cloud.xyz").string(), points, 9);
     writeLinesJson((dir / "truth.json").string(), truth, shape, spacing);
+    if (!BRepTools::Write(part, (dir / "truth.brep").string().c_str())) {
+        throw std::runtime_error("cannot write " + (dir / "truth.brep").string());
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -821,13 +845,16 @@ Row featureLinesRow(const std::string& name, const std::string& noise, const Fea
 
 /// --surfaces: the run's patch surfaces fitted, sewn and measured against the true shape.
 SurfaceQuality surfaceRow(const FeatureLinesRun& run, const PointMatrix& cloud,
-                          const TopoDS_Shape& truth, double spacing)
+                          const TopoDS_Shape& truth, double spacing,
+                          featurelines::surfaces::BSplineFace bspline)
 {
     const auto start = std::chrono::steady_clock::now();
     SurfaceQuality q;
     try {
+        featurelines::surfaces::PatchSurfaceOptions options;
+        options.bspline = bspline;
         const featurelines::surfaces::PatchSurfaces fitted =
-            featurelines::surfaces::surfacesOfExtraction(cloud, run.result);
+            featurelines::surfaces::surfacesOfExtraction(cloud, run.result, {}, options);
         const double fitSeconds = seconds(start);
         q = measureSurfaces(fitted, truth, cloud, spacing);
         q.seconds = fitSeconds;
@@ -896,7 +923,8 @@ void measurePart(const CadShape& part, const std::string& group, unsigned seed,
         }
         const std::string caseName = part.name + "-" + noise;
         if (!args.writeDir.empty()) {
-            writeCase(args.writeDir, caseName, cloud.points, s.truth, part.name, s.spacing);
+            writeCase(args.writeDir, caseName, cloud.points, s.truth, part.name, s.spacing,
+                      part.shape);
         }
 
         // The project's extraction.
@@ -907,7 +935,7 @@ void measurePart(const CadShape& part, const std::string& group, unsigned seed,
                       : Row(part.name, noise, "featurelines");
         row.seconds = extractionSeconds;
         if (args.surfaces && run) {
-            row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing);
+            row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing, args.bspline);
         }
         row.group = group;
         results.rows.push_back(row);
@@ -1095,7 +1123,9 @@ SurfaceTotals printSurfaceQuality(const Results& results, bool markdown)
         table.push_back(
             {r.shape, r.noise, std::to_string(q.faces) + "/" + std::to_string(q.patches),
              std::to_string(q.kinds[0]), std::to_string(q.kinds[1]), std::to_string(q.kinds[2]),
-             std::to_string(q.kinds[3]), std::to_string(q.kinds[4]), std::to_string(q.kinds[5]),
+             std::to_string(q.kinds[3]), std::to_string(q.kinds[4]),
+             std::to_string(q.kinds[5]) +
+                 (q.plates > 0 ? " (" + std::to_string(q.plates) + " plate)" : std::string()),
              q.solid ? (q.valid ? "valid solid" : "invalid solid") : (q.faces ? "open" : "-"),
              formatNumber(q.toTruthMean, 2), formatNumber(q.toTruthP95, 2),
              formatNumber(q.fromTruthMean, 2), formatNumber(q.fromTruthP95, 2),
@@ -1230,7 +1260,7 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
 
     if (!args.writeDir.empty()) {
         writeCase(args.writeDir, "random-" + std::to_string(seed), cloud.points, s.truth, name,
-                  s.spacing);
+                  s.spacing, part.shape);
     }
 
     const auto start = std::chrono::steady_clock::now();
@@ -1239,7 +1269,7 @@ void measureRandomPart(std::uint32_t seed, const Arguments& args, Results& resul
     row.seconds = seconds(start);
     row.group = record.group;
     if (args.surfaces) {
-        row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing);
+        row.surfaces = surfaceRow(*run, cloud.points, part.shape, s.spacing, args.bspline);
     }
     results.rows.push_back(row);
     record.seconds = row.seconds;

@@ -7,7 +7,12 @@
 // of the B-rep's volume.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomLProp_SLProps.hxx>
@@ -405,6 +410,69 @@ TEST(PatchSurfaces, AMergedViewScansPatchesGiveFacesOrReasonsNotACrash)
         } else {
             EXPECT_TRUE(f.problem.empty()) << f.problem;
         }
+    }
+}
+
+TEST(PatchSurfaces, ASaddlePatchGetsAHeightFieldOrAPlateThroughItsBorder)
+{
+    // z = (x^2 - y^2) / 40 over [-10, 10]^2, its border four B-spline edges on the saddle: both
+    // B-spline faces lie within a twentieth of a spacing of the points, the plate through the
+    // border's own edges, each of the saddle's area.
+    const auto z = [](double x, double y) { return (x * x - y * y) / 40.0; };
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    PointMatrix P(800, 3);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const double x = u(rng);
+        const double y = u(rng);
+        P.row(i) << x, y, z(x, y);
+    }
+    const double corners[5][2] = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
+    BRepBuilderAPI_MakeWire wire;
+    for (int side = 0; side < 4; ++side) {
+        TColgp_Array1OfPnt along(1, 21);
+        for (int k = 0; k <= 20; ++k) {
+            const double t = k / 20.0;
+            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
+            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
+            along.SetValue(k + 1, gp_Pnt(x, y, z(x, y)));
+        }
+        wire.Add(BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(along).Curve()).Edge());
+    }
+    ASSERT_TRUE(wire.IsDone());
+    const std::vector<TopoDS_Wire> border = {wire.Wire()};
+    const auto rmsOf = [](const std::vector<double>& d) {
+        double sum = 0.0;
+        for (double x : d) {
+            sum += x * x;
+        }
+        return std::sqrt(sum / static_cast<double>(d.size()));
+    };
+    // The saddle's area over the square, by the midpoint rule: the integral of
+    // sqrt(1 + (x / 20)^2 + (y / 20)^2).
+    double area = 0.0;
+    const int cells = 400;
+    const double h = 20.0 / cells;
+    for (int i = 0; i < cells; ++i) {
+        for (int j = 0; j < cells; ++j) {
+            const double x = -10.0 + (i + 0.5) * h;
+            const double y = -10.0 + (j + 0.5) * h;
+            area += std::sqrt(1.0 + x * x / 400.0 + y * y / 400.0) * h * h;
+        }
+    }
+    PatchSurfaceOptions options;
+    for (BSplineFace method : {BSplineFace::HeightField, BSplineFace::Plate}) {
+        options.bspline = method;
+        const PatchFace f = fitPatchFace(3, P, border, 1.0, 0.0, options);
+        ASSERT_FALSE(f.face.IsNull()) << f.problem;
+        EXPECT_EQ(f.surface.kind, SurfaceKind::BSpline);
+        EXPECT_EQ(f.plate, method == BSplineFace::Plate);
+        EXPECT_LT(f.surface.rmsDeviation, 0.05);
+        ASSERT_EQ(f.deviations.size(), static_cast<size_t>(P.rows()));
+        EXPECT_NEAR(rmsOf(f.deviations), f.surface.rmsDeviation, 1e-9);
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(f.face, props);
+        EXPECT_NEAR(props.Mass(), area, 0.005 * area);
     }
 }
 
