@@ -234,9 +234,9 @@ void ViewProviderPatchSurfaces::setDisplayMode(const char* mode)
 {
     if (std::string(mode) == deviationMode) {
         setDisplayMaskMode(deviationMode);
-        computeDeviations();
     }
     PartGui::ViewProviderPartExt::setDisplayMode(mode);
+    computeDeviations();
     showColourBar();
 }
 
@@ -276,7 +276,8 @@ void ViewProviderPatchSurfaces::showColourBar()
 void ViewProviderPatchSurfaces::computeDeviations()
 {
     const App::DocumentObject* object = getObject();
-    if (!object || !Visibility.getValue()) {
+    // Only for the map on view: Part's modes do without it (setDisplayMode computes it then).
+    if (!object || !Visibility.getValue() || getActiveDisplayMode() != deviationMode) {
         return;
     }
     const int vertices = coords->point.getNum();
