@@ -626,6 +626,14 @@ PatchFace fitPatchFace(int patch, const PointMatrix& points, const std::vector<T
             pf.face.Nullify();
             pf.plate = false;
             pf.deviations.clear();
+        } else if (pf.surface.kind == SurfaceKind::BSpline && !pf.plate) {
+            // The height field's own distance is vertical, more than the distance along the
+            // normal where the surface slopes: the points' deviations and their RMS and largest
+            // are measured along the normal, as for every other kind.
+            pf.deviations = projectedDeviations(pf.face, points);
+            const auto [rms, largest] = rmsAndLargest(pf.deviations);
+            pf.surface.rmsDeviation = rms;
+            pf.surface.maxDeviation = largest;
         } else if (!pf.plate) {
             const double sign = pf.face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
             pf.deviations.resize(static_cast<size_t>(points.rows()));

@@ -55,9 +55,10 @@ struct PatchFace
     /// `surface` describes; its RMS and largest deviations are then the plate's (the points'
     /// distances along its normal, by projection).
     bool plate = false;
-    /// Per point of the patch, in the order given: its signed distance from the surface,
-    /// positive on the side the face's normal points to (out of the solid where the faces
-    /// close into one); empty without a face.
+    /// Per point of the patch, in the order given: its signed distance from the surface
+    /// along the surface's normal (a B-spline's by projection; surface.rmsDeviation and
+    /// maxDeviation then the same measure's), positive on the side the face's normal points to
+    /// (out of the solid where the faces close into one); empty without a face.
     std::vector<double> deviations;
 };
 

@@ -416,8 +416,8 @@ TEST(PatchSurfaces, AMergedViewScansPatchesGiveFacesOrReasonsNotACrash)
 TEST(PatchSurfaces, ASaddlePatchGetsAHeightFieldOrAPlateThroughItsBorder)
 {
     // z = (x^2 - y^2) / 40 over [-10, 10]^2, its border four B-spline edges on the saddle: both
-    // B-spline faces lie within a twentieth of a spacing of the points, the plate through the
-    // border's own edges, each of the saddle's area.
+    // B-spline faces lie within a twentieth of a spacing of the points (along the normal), the
+    // plate through the border's own edges, each of the saddle's area.
     const auto z = [](double x, double y) { return (x * x - y * y) / 40.0; };
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> u(-10.0, 10.0);
@@ -474,6 +474,41 @@ TEST(PatchSurfaces, ASaddlePatchGetsAHeightFieldOrAPlateThroughItsBorder)
         BRepGProp::SurfaceProperties(f.face, props);
         EXPECT_NEAR(props.Mass(), area, 0.005 * area);
     }
+}
+
+TEST(PatchSurfaces, ABSplinesDeviationsAreAlongItsNormal)
+{
+    // A steeper saddle, z = (x^2 - y^2) / 20 (slopes up to 1), its points moved along the true
+    // normal by Gaussian noise of 0.1: the height field's points lie 0.1 (RMS) from it along the
+    // normal, though their vertical distances, which the fit itself minimises, are larger.
+    const auto z = [](double x, double y) { return (x * x - y * y) / 20.0; };
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    std::normal_distribution<double> noise(0.0, 0.1);
+    PointMatrix P(3000, 3);
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+        const double x = u(rng);
+        const double y = u(rng);
+        const Eigen::Vector3d n = Eigen::Vector3d(-x / 10.0, y / 10.0, 1.0).normalized();
+        P.row(i) = (Eigen::Vector3d(x, y, z(x, y)) + noise(rng) * n).transpose();
+    }
+    BRepBuilderAPI_MakeWire wire;
+    const double corners[5][2] = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
+    for (int side = 0; side < 4; ++side) {
+        TColgp_Array1OfPnt along(1, 21);
+        for (int k = 0; k <= 20; ++k) {
+            const double t = k / 20.0;
+            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
+            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
+            along.SetValue(k + 1, gp_Pnt(x, y, z(x, y)));
+        }
+        wire.Add(BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(along).Curve()).Edge());
+    }
+    const PatchFace f = fitPatchFace(4, P, {wire.Wire()}, 1.0, 0.1);
+    ASSERT_FALSE(f.face.IsNull()) << f.problem;
+    ASSERT_EQ(f.surface.kind, SurfaceKind::BSpline);
+    EXPECT_NEAR(f.surface.rmsDeviation, 0.1, 0.015);
+    EXPECT_GT(fitSurface(P, 1.0, 0.1).rmsDeviation, 1.1 * f.surface.rmsDeviation);
 }
 
 TEST(PatchSurfaces, ABadPatchGetsNoFaceAndAReason)
