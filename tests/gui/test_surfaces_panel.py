@@ -6,7 +6,9 @@ FeatureLines::PatchSurfaces object is made from them and its panel opens: the fa
 (the demo part's planes, cylinders and the torus of the boss's foot, sewn into a valid solid),
 per patch its surface and its points' deviations, the colour map on. The view colours the
 faces by the scan's deviation (green on the face, FreeCAD's colour bar beside the view); off,
-the faces are Part's grey. OK keeps it all in one undo step per panel.
+the faces are Part's grey. OK keeps it all in one undo step per panel. A new cloud without lines
+(a sphere's) fails the lines' recompute with the reason; the surfaces keep their faces, and
+the map turns grey once redrawn (their deviations belong to the old cloud).
 Screenshot at FreeCAD's default layout (1366 x 768): surfaces_deviation
 (docs/images/gui-surfaces-deviation.png)."""
 
@@ -175,6 +177,32 @@ def closed():
             "one undo step for the fit: %s" % doc.UndoNames)
 
 
+def failed_refit():
+    """The cloud replaced by a whole sphere's: no line at all, so the lines' recompute fails
+    with the reason and the surfaces keep their faces and deviations. Those belong to the old
+    cloud: once the view draws the faces again (a finer tessellation), the map is grey, not
+    colours of points that are gone."""
+    import FreeCAD
+    import Points
+    import sampled_shapes
+
+    doc, cloud, feature = state["doc"], state["cloud"], state["surfaces"]
+    lines = state["lines"]
+    volume = feature.Shape.Volume
+    cloud.Points = Points.Points([FreeCAD.Vector(*p)
+                                  for p in sampled_shapes.sphere(10.0, 0.5, 31)])
+    doc.recompute()
+    g.settle()
+    g.log("the lines after the new cloud: %s" % lines.getStatusString())
+    g.check("No feature lines found" in lines.getStatusString(), "the lines say why")
+    g.check(abs(feature.Shape.Volume - volume) < 1e-6 * volume, "the faces of the run before stay")
+    g.check(len(feature.PointDeviations) != len(cloud.Points.Points),
+            "the deviations are the old cloud's")
+    feature.ViewObject.Deviation = 0.05
+    green, part = green_share("deviation_stale")
+    g.check(part > 1000 and green < 0.05, "the map is grey: %.2f green of %d pixels" % (green, part))
+
+
 def build(steps):
     steps.then("the demo cloud, selected", setup)
     steps.then("Extract feature lines", extract)
@@ -187,6 +215,7 @@ def build(steps):
     steps.then("OK", ok)
     steps.then("the panel closed, the surfaces kept", closed,
                wait_for=lambda: not g.panel_is_open())
+    steps.then("a failed refit keeps the faces, the map grey", failed_refit)
 
 
 g.start("from the cloud to surfaces in the GUI", build)
