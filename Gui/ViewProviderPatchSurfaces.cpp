@@ -32,6 +32,7 @@
 #include <QMessageBox>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -80,16 +81,17 @@ public:
         }
     }
 
-    /// Calls f(index, distance) for every point within `radius` (at most one cell) of x.
+    /// Calls f(index, distance) for every point within `radius` of x.
     template <typename F>
     void near(const Base::Vector3d& x, double radius, F f) const
     {
         const std::int64_t cx = coordinate(x.x);
         const std::int64_t cy = coordinate(x.y);
         const std::int64_t cz = coordinate(x.z);
-        for (std::int64_t i = cx - 1; i <= cx + 1; ++i) {
-            for (std::int64_t j = cy - 1; j <= cy + 1; ++j) {
-                for (std::int64_t k = cz - 1; k <= cz + 1; ++k) {
+        const auto reach = static_cast<std::int64_t>(std::ceil(radius / cell));
+        for (std::int64_t i = cx - reach; i <= cx + reach; ++i) {
+            for (std::int64_t j = cy - reach; j <= cy + reach; ++j) {
+                for (std::int64_t k = cz - reach; k <= cz + reach; ++k) {
                     const auto found = cells.find(pack(i, j, k));
                     if (found == cells.end()) {
                         continue;
@@ -175,8 +177,8 @@ ViewProviderPatchSurfaces::~ViewProviderPatchSurfaces()
 void ViewProviderPatchSurfaces::attach(App::DocumentObject* object)
 {
     PartGui::ViewProviderPartExt::attach(object);
-    // Part's edges; the colour map's own finer mesh of the faces (not pickable); behind it, a
-    // polygon offset further back, Part's faces, which selection picks as in Part's modes.
+    // Part's edges, then (a polygon offset behind them) the colour map's own finer mesh of the
+    // faces, not pickable, and Part's faces, which selection picks as in Part's modes.
     deviationRoot = new SoSeparator();
     deviationRoot->ref();
     auto* edges = new SoSeparator();
@@ -203,11 +205,12 @@ void ViewProviderPatchSurfaces::attach(App::DocumentObject* object)
     map->addChild(mapCoordinates);
     map->addChild(mapFaces);
     deviationRoot->addChild(map);
-    auto* farOffset = new SoPolygonOffset();
-    farOffset->factor = 2.0f;
-    farOffset->units = 2.0f;
-    deviationRoot->addChild(farOffset);
+    // Part's faces, not drawn (they would fight the map's mesh in the depth buffer) but there
+    // for selection and its highlight.
     auto* faces = new SoSeparator();
+    auto* invisible = new SoDrawStyle();
+    invisible->style = SoDrawStyle::INVISIBLE;
+    faces->addChild(invisible);
     faces->addChild(pShapeHints);
     faces->addChild(pcFaceBind);
     faces->addChild(pcShapeMaterial);
@@ -335,7 +338,7 @@ void ViewProviderPatchSurfaces::computeDeviations()
     // where there are none (a gap of the scan; along the lines, whose points belong to no
     // patch), of those within 3 spacings.
     const double radius = 1.5 * spacing;
-    const PointGrid grid(std::move(points), 2.0 * radius);
+    const PointGrid grid(std::move(points), radius);
     const SbVec3f* xyz = mapCoordinates->point.getValues(0);
     for (size_t v = 0; v < deviations.size(); ++v) {
         const Base::Vector3d x(xyz[v][0], xyz[v][1], xyz[v][2]);
@@ -369,70 +372,109 @@ void ViewProviderPatchSurfaces::refineFaces(double spacing)
     const SbVec3f* normal = norm->vector.getValues(0);
     const int32_t* index = faceset->coordIndex.getValues(0);
     const int indices = faceset->coordIndex.getNum();
-    std::vector<SbVec3f> points;
-    std::vector<SbVec3f> pointNormals;
-    std::vector<int32_t> triangles;
-    // Sub-triangles of about a spacing's side, some million at most in all.
+    std::vector<SbVec3f> points(xyz, xyz + nodes);
+    std::vector<SbVec3f> pointNormals(static_cast<size_t>(nodes), SbVec3f(0.0f, 0.0f, 0.0f));
+    for (int k = 0; k < std::min(nodes, normals); ++k) {
+        pointNormals[static_cast<size_t>(k)] = normal[k];
+    }
+    std::vector<std::array<int32_t, 3>> triangles;
     double area = 0.0;
     for (int i = 0; i + 2 < indices; i += 4) {
-        const int a = index[i], b = index[i + 1], c = index[i + 2];
+        const int32_t a = index[i], b = index[i + 1], c = index[i + 2];
         if (a < 0 || b < 0 || c < 0 || a >= nodes || b >= nodes || c >= nodes) {
             continue;
         }
+        triangles.push_back({a, b, c});
         area += 0.5 * ((xyz[b] - xyz[a]).cross(xyz[c] - xyz[a])).length();
     }
-    double side = spacing > 0.0 ? spacing : 1.0;
-    side = std::max(side, std::sqrt(2.0 * area / 1.0e6));
-    for (int i = 0; i + 2 < indices; i += 4) {
-        const int t[3] = {index[i], index[i + 1], index[i + 2]};
-        if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nodes || t[1] >= nodes ||
-            t[2] >= nodes) {
-            continue;
-        }
-        const SbVec3f& a = xyz[t[0]];
-        const SbVec3f& b = xyz[t[1]];
-        const SbVec3f& c = xyz[t[2]];
-        const double longest =
-            std::max({(b - a).length(), (c - b).length(), (a - c).length()});
-        const int n = std::clamp(static_cast<int>(std::ceil(longest / side)), 1, 200);
-        const auto normalOf = [&](int k) {
-            return k < normals ? normal[k] : SbVec3f(0.0f, 0.0f, 0.0f);
+    // Edges longer than about a spacing are halved, each edge once for both its triangles (a
+    // triangle split on one, two or all three of its edges), until none is: the mesh stays
+    // without cracks. Some half a million triangles at most in all.
+    const double side = std::max(spacing > 0.0 ? spacing : 1.0, std::sqrt(2.0 * area / 5.0e5));
+    for (int round = 0; round < 24; ++round) {
+        std::unordered_map<std::uint64_t, int32_t> middles;
+        bool split = false;
+        const auto middle = [&](int32_t a, int32_t b) -> int32_t {
+            const SbVec3f& pa = points[static_cast<size_t>(a)];
+            const SbVec3f& pb = points[static_cast<size_t>(b)];
+            if (!((pb - pa).length() > side)) {
+                return -1;
+            }
+            const std::uint64_t key = static_cast<std::uint64_t>(std::min(a, b)) << 32 |
+                                      static_cast<std::uint32_t>(std::max(a, b));
+            const auto found = middles.find(key);
+            if (found != middles.end()) {
+                return found->second;
+            }
+            const int32_t m = static_cast<int32_t>(points.size());
+            points.push_back((pa + pb) * 0.5f);
+            SbVec3f n = pointNormals[static_cast<size_t>(a)] + pointNormals[static_cast<size_t>(b)];
+            if (n.length() > 0.0f) {
+                n.normalize();
+            }
+            pointNormals.push_back(n);
+            middles.emplace(key, m);
+            return m;
         };
-        const SbVec3f na = normalOf(t[0]), nb = normalOf(t[1]), nc = normalOf(t[2]);
-        // The nodes (i, j), i + j <= n, at a + (b - a) i / n + (c - a) j / n.
-        const int32_t first = static_cast<int32_t>(points.size());
-        const auto node = [&](int r, int q) {
-            // Row r holds n + 1 - r nodes.
-            return first + r * (n + 1) - r * (r - 1) / 2 + q;
-        };
-        for (int r = 0; r <= n; ++r) {
-            for (int q = 0; q <= n - r; ++q) {
-                const float u = static_cast<float>(q) / n;
-                const float v = static_cast<float>(r) / n;
-                points.push_back(a + (b - a) * u + (c - a) * v);
-                SbVec3f m = na * (1.0f - u - v) + nb * u + nc * v;
-                if (m.length() > 0.0f) {
-                    m.normalize();
+        std::vector<std::array<int32_t, 3>> next;
+        next.reserve(triangles.size() * 2);
+        for (const std::array<int32_t, 3>& t : triangles) {
+            const int32_t m[3] = {middle(t[0], t[1]), middle(t[1], t[2]), middle(t[2], t[0])};
+            const int count = (m[0] >= 0) + (m[1] >= 0) + (m[2] >= 0);
+            if (count == 0) {
+                next.push_back(t);
+                continue;
+            }
+            split = true;
+            if (count == 3) {
+                next.push_back({t[0], m[0], m[2]});
+                next.push_back({m[0], t[1], m[1]});
+                next.push_back({m[2], m[1], t[2]});
+                next.push_back({m[0], m[1], m[2]});
+                continue;
+            }
+            // Turned so that the edge after the first vertex is split (one split) or the edge
+            // before it is whole (two splits): (a, b, c) with a middle on a-b.
+            int r = 0;
+            if (count == 1) {
+                while (m[r] < 0) {
+                    ++r;
                 }
-                pointNormals.push_back(m);
+            } else {
+                while (m[(r + 2) % 3] >= 0) {
+                    ++r;
+                }
+            }
+            const int32_t a = t[static_cast<size_t>(r)];
+            const int32_t b = t[static_cast<size_t>((r + 1) % 3)];
+            const int32_t c = t[static_cast<size_t>((r + 2) % 3)];
+            const int32_t mab = m[r];
+            if (count == 1) {
+                next.push_back({a, mab, c});
+                next.push_back({mab, b, c});
+            } else {
+                const int32_t mbc = m[(r + 1) % 3];
+                next.push_back({mab, b, mbc});
+                next.push_back({a, mab, mbc});
+                next.push_back({a, mbc, c});
             }
         }
-        for (int r = 0; r < n; ++r) {
-            for (int q = 0; q < n - r; ++q) {
-                triangles.insert(triangles.end(), {node(r, q), node(r, q + 1), node(r + 1, q), -1});
-                if (q + 1 < n - r) {
-                    triangles.insert(triangles.end(),
-                                     {node(r, q + 1), node(r + 1, q + 1), node(r + 1, q), -1});
-                }
-            }
+        triangles = std::move(next);
+        if (!split) {
+            break;
         }
+    }
+    std::vector<int32_t> faces;
+    faces.reserve(triangles.size() * 4);
+    for (const std::array<int32_t, 3>& t : triangles) {
+        faces.insert(faces.end(), {t[0], t[1], t[2], -1});
     }
     mapCoordinates->point.setValues(0, static_cast<int>(points.size()), points.data());
     mapCoordinates->point.setNum(static_cast<int>(points.size()));
     mapNormals->vector.setValues(0, static_cast<int>(pointNormals.size()), pointNormals.data());
     mapNormals->vector.setNum(static_cast<int>(pointNormals.size()));
-    mapFaces->coordIndex.setValues(0, static_cast<int>(triangles.size()), triangles.data());
-    mapFaces->coordIndex.setNum(static_cast<int>(triangles.size()));
+    mapFaces->coordIndex.setValues(0, static_cast<int>(faces.size()), faces.data());
+    mapFaces->coordIndex.setNum(static_cast<int>(faces.size()));
 }
 
 double ViewProviderPatchSurfaces::deviationRange() const
