@@ -567,6 +567,55 @@ FittedSurface fitTorus(const PointMatrix& P)
     return torusWith(P, patchNormals(P));
 }
 
+namespace {
+
+/// Up to `most` rows of P, evenly picked, and each one's nearest (k) among them.
+struct PatchSample
+{
+    PointMatrix points;
+    Neighbourhoods neighbours;
+};
+
+PatchSample samplePatch(const PointMatrix& P, Eigen::Index most, int k)
+{
+    PatchSample s;
+    const Eigen::Index step = std::max<Eigen::Index>(1, (P.rows() + most - 1) / most);
+    s.points.resize((P.rows() + step - 1) / step, 3);
+    for (Eigen::Index i = 0; i < s.points.rows(); ++i) {
+        s.points.row(i) = P.row(i * step);
+    }
+    NeighbourOptions no;
+    no.k = static_cast<int>(std::min<Eigen::Index>(k, s.points.rows() - 1));
+    s.neighbours = nearestNeighbours(s.points, no);
+    return s;
+}
+
+/// The part of the points' deviation from `s` that follows the surface, not the noise: the RMS
+/// over the sample of each point's signed distance averaged with its nearest's. Noise of
+/// deviation sigma leaves about sigma / sqrt(k + 1) of it; a surface of the wrong kind, which
+/// the points leave by the same amount over a stretch, all of its deviation there.
+double systematicDeviation(const FittedSurface& s, const PatchSample& sample)
+{
+    const Eigen::Index n = sample.points.rows();
+    std::vector<double> d(static_cast<size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        d[static_cast<size_t>(i)] = signedSurfaceDistance(s, sample.points.row(i).transpose());
+    }
+    double sum = 0.0;
+    const int k = sample.neighbours.k();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        double local = d[static_cast<size_t>(i)];
+        for (int j = 0; j < k; ++j) {
+            local += d[static_cast<size_t>(sample.neighbours.indices(i, j))];
+        }
+        local /= (k + 1);
+        sum += local * local;
+    }
+    return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+} // namespace
+
 FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
                          const SurfaceFitOptions& options)
 {
@@ -591,9 +640,19 @@ FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
     }
     const double tolerance = std::max(options.tolerance * spacing, options.noiseFactor * noise);
     const double extent = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+    // A kind is also held to its systematic deviation: the points' averaged over their nearest,
+    // within systematicTolerance spacings and what such an average leaves of the noise.
+    const PatchSample sample = samplePatch(P, options.systematicPoints, options.systematicK);
+    const double systematicTolerance =
+        std::hypot(options.systematicTolerance * spacing,
+                   options.noiseFactor * noise / std::sqrt(sample.neighbours.k() + 1.0));
+    const auto systematicOk = [&](const FittedSurface& s) {
+        return options.systematicTolerance <= 0.0 ||
+               systematicDeviation(s, sample) <= systematicTolerance;
+    };
     FittedSurface plane = fitPlane(P);
     plane.tolerance = tolerance;
-    if (plane.rmsDeviation <= tolerance) {
+    if (plane.rmsDeviation <= tolerance && systematicOk(plane)) {
         return plane;
     }
     // Of the sphere, cylinder, cone and torus within the tolerance, the first (the fewest
@@ -630,7 +689,7 @@ FittedSurface fitSurface(const PointMatrix& P, double spacing, double noise,
         }
     }
     for (const FittedSurface& s : candidates) {
-        if (accepted(s) && s.rmsDeviation <= 1.5 * least) {
+        if (accepted(s) && s.rmsDeviation <= 1.5 * least && systematicOk(s)) {
             FittedSurface out = s;
             out.tolerance = tolerance;
             return out;

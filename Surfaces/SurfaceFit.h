@@ -78,6 +78,14 @@ struct SurfaceFitOptions
     /// The sphere, cylinder, cone and torus are fitted to at most this many of the points,
     /// evenly picked, and measured on all (20000).
     int maxFitPoints = 20000;
+    /// A plane, sphere, cylinder, cone or torus is also refused when the points' deviation
+    /// averaged over each one's systematicK nearest (on at most systematicPoints of them)
+    /// has an RMS above this many spacings, with the share of the noise such an average
+    /// leaves added (0.1; 0: no such test): a small patch of several surfaces fits one sphere
+    /// within the noise, but leaves it by a like amount over whole stretches.
+    double systematicTolerance = 0.1;
+    int systematicK = 16;
+    Eigen::Index systematicPoints = 4000;
     /// BSpline: control points per direction, at most (12), and about one per this many
     /// spacings of the patch's extent (4).
     int maxPoles = 12;

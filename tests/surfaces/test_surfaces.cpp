@@ -233,6 +233,49 @@ TEST(SurfaceFit, TheSignedDistanceIsPositiveWhereTheSurfacesNormalPoints)
     }
 }
 
+TEST(SurfaceFit, ANoisyFilletWithAStripOfItsFaceIsNoCylinder)
+{
+    // A quarter cylinder of radius 5 along x and, tangent to it, a 6-spacing strip of the face
+    // it blends into; noise of 0.3 spacing along the normal. Within the noise the points fit one
+    // cylinder (its RMS under 1.5 times the noise), but they leave it by a like amount all along
+    // the strip: the systematic test refuses it, and the patch gets the B-spline. A whole noisy
+    // cylinder stays a cylinder.
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::normal_distribution<double> noise(0.0, 0.3);
+    const double r = 5.0;
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 1500; ++i) {
+        const double x = 30.0 * unit(rng);
+        const double t = unit(rng) * (0.5 * M_PI * r + 6.0);
+        Eigen::Vector3d p;
+        Eigen::Vector3d n;
+        if (t < 0.5 * M_PI * r) {
+            const double a = t / r;
+            n = Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
+            p = Eigen::Vector3d(x, 0.0, 0.0) + r * n;
+        } else {
+            // The face z = r beyond the fillet's end at y = 0, running to negative y.
+            n = Eigen::Vector3d(0.0, 0.0, 1.0);
+            p = Eigen::Vector3d(x, -(t - 0.5 * M_PI * r), r);
+        }
+        points.push_back(p + noise(rng) * n);
+    }
+    PointMatrix P(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) {
+        P.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    }
+    SurfaceFitOptions without;
+    without.systematicTolerance = 0.0;
+    const FittedSurface loose = fitSurface(P, 1.0, 0.3, without);
+    EXPECT_NE(loose.kind, SurfaceKind::BSpline) << "the test's patch no longer fits one surface "
+                                                  "within the noise";
+    EXPECT_EQ(fitSurface(P, 1.0, 0.3).kind, SurfaceKind::BSpline);
+    shapes::Sample cylinder = shapes::cylinder(r, 30.0, 1.0, 38);
+    shapes::addNormalNoise(cylinder, 0.3, 39);
+    EXPECT_EQ(fitSurface(cylinder.points, 1.0, 0.3).kind, SurfaceKind::Cylinder);
+}
+
 TEST(SurfaceFit, BadPatchesAreNamed)
 {
     PointMatrix few(5, 3);
