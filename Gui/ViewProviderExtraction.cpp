@@ -28,6 +28,7 @@
 #include <cmath>
 
 #include "ExtractionFeature.h"
+#include "ObjectPanel.h"
 #include "PointPreview.h"
 #include "TaskExtraction.h"
 
@@ -249,25 +250,14 @@ bool ViewProviderExtraction::setEdit(int ModNum)
     if (ModNum != ViewProvider::Default) {
         return PartGui::ViewProviderPart::setEdit(ModNum);
     }
-    Gui::TaskView::TaskDialog* dialog = Gui::Control().activeDialog();
-    if (auto* own = qobject_cast<TaskExtraction*>(dialog)) {
-        if (own->getObject() == getObject()) {
-            Gui::Control().showDialog(dialog);
-            return true;
-        }
-    }
-    if (dialog) {
-        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("A task is open"),
-                             QObject::tr("Close the open task panel first (OK or Cancel), then "
-                                         "edit the feature lines."));
-        return false;
-    }
-    Gui::Selection().clearSelection();
-    // The panel shows its own colours of the cloud meanwhile.
-    editing = true;
-    colourPoints();
-    Gui::Control().showDialog(new TaskExtraction(this));
-    return true;
+    return showObjectPanel<TaskExtraction>(getObject(), QObject::tr("edit the feature lines"),
+                                           [this] {
+                                               // The panel shows its own colours of the cloud
+                                               // meanwhile.
+                                               editing = true;
+                                               colourPoints();
+                                               Gui::Control().showDialog(new TaskExtraction(this));
+                                           });
 }
 
 void ViewProviderExtraction::unsetEdit(int ModNum)

@@ -21,15 +21,12 @@
 #include <Base/TimeInfo.h>
 #include <Gui/BitmapFactory.h>
 #include <Gui/Control.h>
-#include <Gui/MainWindow.h>
-#include <Gui/Selection.h>
 #include <Gui/SoFCColorBar.h>
 #include <Mod/Part/App/PartFeature.h>
 #include <Mod/Part/Gui/SoBrepEdgeSet.h>
 #include <Mod/Part/Gui/SoBrepFaceSet.h>
 #include <Mod/Points/App/PointsFeature.h>
 
-#include <QMessageBox>
 
 #include <algorithm>
 #include <array>
@@ -38,6 +35,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "ObjectPanel.h"
 #include "TaskPatchSurfaces.h"
 
 using namespace FeatureLinesGui;
@@ -528,22 +526,9 @@ bool ViewProviderPatchSurfaces::setEdit(int ModNum)
     if (ModNum != ViewProvider::Default) {
         return PartGui::ViewProviderPartExt::setEdit(ModNum);
     }
-    Gui::TaskView::TaskDialog* dialog = Gui::Control().activeDialog();
-    if (auto* own = qobject_cast<TaskPatchSurfaces*>(dialog)) {
-        if (own->getObject() == getObject()) {
-            Gui::Control().showDialog(dialog);
-            return true;
-        }
-    }
-    if (dialog) {
-        QMessageBox::warning(Gui::getMainWindow(), QObject::tr("A task is open"),
-                             QObject::tr("Close the open task panel first (OK or Cancel), then "
-                                         "edit the surfaces."));
-        return false;
-    }
-    Gui::Selection().clearSelection();
-    Gui::Control().showDialog(new TaskPatchSurfaces(this));
-    return true;
+    return showObjectPanel<TaskPatchSurfaces>(getObject(), QObject::tr("edit the surfaces"), [this] {
+        Gui::Control().showDialog(new TaskPatchSurfaces(this));
+    });
 }
 
 void ViewProviderPatchSurfaces::unsetEdit(int ModNum)
