@@ -456,6 +456,26 @@ TEST(PatchSurfaces, AMergedViewScansPatchesGiveFacesOrReasonsNotACrash)
     }
 }
 
+/// The border of the height field z over the square [-10, 10]^2: its four sides lifted onto it,
+/// each a B-spline through 21 of its points.
+TopoDS_Wire borderOver(const std::function<double(double, double)>& z)
+{
+    const double corners[5][2] = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
+    BRepBuilderAPI_MakeWire wire;
+    for (int side = 0; side < 4; ++side) {
+        TColgp_Array1OfPnt along(1, 21);
+        for (int k = 0; k <= 20; ++k) {
+            const double t = k / 20.0;
+            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
+            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
+            along.SetValue(k + 1, gp_Pnt(x, y, z(x, y)));
+        }
+        wire.Add(BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(along).Curve()).Edge());
+    }
+    EXPECT_TRUE(wire.IsDone());
+    return wire.Wire();
+}
+
 TEST(PatchSurfaces, ASaddlePatchGetsAHeightFieldOrAPlateThroughItsBorder)
 {
     // z = (x^2 - y^2) / 40 over [-10, 10]^2, its border four B-spline edges on the saddle: both
@@ -470,20 +490,7 @@ TEST(PatchSurfaces, ASaddlePatchGetsAHeightFieldOrAPlateThroughItsBorder)
         const double y = u(rng);
         P.row(i) << x, y, z(x, y);
     }
-    const double corners[5][2] = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
-    BRepBuilderAPI_MakeWire wire;
-    for (int side = 0; side < 4; ++side) {
-        TColgp_Array1OfPnt along(1, 21);
-        for (int k = 0; k <= 20; ++k) {
-            const double t = k / 20.0;
-            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
-            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
-            along.SetValue(k + 1, gp_Pnt(x, y, z(x, y)));
-        }
-        wire.Add(BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(along).Curve()).Edge());
-    }
-    ASSERT_TRUE(wire.IsDone());
-    const std::vector<TopoDS_Wire> border = {wire.Wire()};
+    const std::vector<TopoDS_Wire> border = {borderOver(z)};
     const auto rmsOf = [](const std::vector<double>& d) {
         double sum = 0.0;
         for (double x : d) {
@@ -535,19 +542,7 @@ TEST(PatchSurfaces, ABSplinesDeviationsAreAlongItsNormal)
         const Eigen::Vector3d n = Eigen::Vector3d(-x / 10.0, y / 10.0, 1.0).normalized();
         P.row(i) = (Eigen::Vector3d(x, y, z(x, y)) + noise(rng) * n).transpose();
     }
-    BRepBuilderAPI_MakeWire wire;
-    const double corners[5][2] = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
-    for (int side = 0; side < 4; ++side) {
-        TColgp_Array1OfPnt along(1, 21);
-        for (int k = 0; k <= 20; ++k) {
-            const double t = k / 20.0;
-            const double x = corners[side][0] + t * (corners[side + 1][0] - corners[side][0]);
-            const double y = corners[side][1] + t * (corners[side + 1][1] - corners[side][1]);
-            along.SetValue(k + 1, gp_Pnt(x, y, z(x, y)));
-        }
-        wire.Add(BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(along).Curve()).Edge());
-    }
-    const PatchFace f = fitPatchFace(4, P, {wire.Wire()}, 1.0, 0.1);
+    const PatchFace f = fitPatchFace(4, P, {borderOver(z)}, 1.0, 0.1);
     ASSERT_FALSE(f.face.IsNull()) << f.problem;
     ASSERT_EQ(f.surface.kind, SurfaceKind::BSpline);
     EXPECT_NEAR(f.surface.rmsDeviation, 0.1, 0.015);
