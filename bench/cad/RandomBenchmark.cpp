@@ -2,6 +2,7 @@
 #include "RandomBenchmark.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -266,26 +267,36 @@ RandomMeans randomMeans(const std::vector<RandomPartRecord>& records)
     return {meanOfDefined(sharp), meanOfDefined(smooth), meanOfDefined(closed)};
 }
 
-RandomFloors parseFloors(const std::string& text)
+std::map<std::string, double> parseNamedNumbers(const std::string& text, const std::string& option,
+                                                const std::vector<std::string>& names)
 {
-    RandomFloors floors;
+    std::map<std::string, double> out;
     for (const std::string& item : splitAt(text, ',')) {
         const size_t eq = item.find('=');
         const std::string name = item.substr(0, eq);
         if (eq == std::string::npos) {
-            throw std::invalid_argument("--floor expects name=value, not \"" + item + "\".");
+            throw std::invalid_argument(option + " expects name=value, not \"" + item + "\".");
         }
-        const double value = parseNumber(item.substr(eq + 1), "--floor " + name);
-        if (name == "sharp") {
-            floors.sharpF1 = value;
-        } else if (name == "smooth") {
-            floors.smoothF1 = value;
-        } else if (name == "closed") {
-            floors.closedness = value;
-        } else {
-            throw std::invalid_argument("--floor knows sharp, smooth and closed, not \"" + name +
-                                        "\".");
+        const double value = parseNumber(item.substr(eq + 1), option + " " + name);
+        if (std::find(names.begin(), names.end(), name) == names.end()) {
+            std::string known;
+            for (size_t i = 0; i < names.size(); ++i) {
+                known += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+            }
+            throw std::invalid_argument(option + " knows " + known + ", not \"" + name + "\".");
         }
+        out[name] = value;
+    }
+    return out;
+}
+
+RandomFloors parseFloors(const std::string& text)
+{
+    RandomFloors floors;
+    for (const auto& [name, value] :
+         parseNamedNumbers(text, "--floor", {"sharp", "smooth", "closed"})) {
+        (name == "sharp" ? floors.sharpF1 : name == "smooth" ? floors.smoothF1
+                                                              : floors.closedness) = value;
     }
     return floors;
 }

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,11 @@ struct RandomFloors
     double smoothF1 = std::numeric_limits<double>::quiet_NaN();
     double closedness = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// "name=value,..." given to `option` (e.g. "--floor"), each name one of `names`, each value a
+/// number. Throws std::invalid_argument naming the option and the item otherwise.
+std::map<std::string, double> parseNamedNumbers(const std::string& text, const std::string& option,
+                                                const std::vector<std::string>& names);
 
 /// "sharp=0.6,smooth=0.3,closed=0.8" (any subset). Throws std::invalid_argument otherwise.
 RandomFloors parseFloors(const std::string& text);

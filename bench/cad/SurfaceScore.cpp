@@ -19,7 +19,6 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
-#include <sstream>
 #include <stdexcept>
 #include <cmath>
 #include <limits>
@@ -248,26 +247,10 @@ SurfaceTotals surfaceTotals(const std::vector<SurfaceQuality>& parts)
 SurfaceFloors parseSurfaceFloors(const std::string& text)
 {
     SurfaceFloors floors;
-    std::stringstream items(text);
-    std::string item;
-    while (std::getline(items, item, ',')) {
-        const size_t eq = item.find('=');
-        if (eq == std::string::npos) {
-            throw std::invalid_argument("--surface-floor expects name=value, not \"" + item +
-                                        "\".");
-        }
-        const std::string name = item.substr(0, eq);
-        const double value = parseNumber(item.substr(eq + 1), "--surface-floor " + name);
-        if (name == "kinds") {
-            floors.kinds = value;
-        } else if (name == "solids") {
-            floors.solids = value;
-        } else if (name == "truth") {
-            floors.toTruth = value;
-        } else {
-            throw std::invalid_argument("--surface-floor knows kinds, solids and truth, not \"" +
-                                        name + "\".");
-        }
+    for (const auto& [name, value] :
+         parseNamedNumbers(text, "--surface-floor", {"kinds", "solids", "truth"})) {
+        (name == "kinds" ? floors.kinds : name == "solids" ? floors.solids : floors.toTruth) =
+            value;
     }
     return floors;
 }
