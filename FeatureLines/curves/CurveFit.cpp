@@ -534,10 +534,9 @@ std::optional<FittedCurve> fitArc(const CurveFitInput& in)
     return ifItHolds(c, P, in.tolerance, [&](const Vec3& p) { return distanceToArc(p, c); });
 }
 
-std::optional<FittedCurve> fitCircle(const CurveFitInput& in)
+std::optional<BestCircle> bestFitCircle(const PointMatrix& P)
 {
-    const PointMatrix& P = in.points;
-    if (!in.closed || !in.freeVertex || P.rows() < 4) {
+    if (P.rows() < 3) {
         return std::nullopt;
     }
     const Vec3 mean = P.colwise().mean().transpose();
@@ -575,10 +574,24 @@ std::optional<FittedCurve> fitCircle(const CurveFitInput& in)
     if (!g.allFinite() || g[2] <= 0) {
         return std::nullopt;
     }
+    return BestCircle{mean + g[0] * x + g[1] * y, n, g[2]};
+}
+
+std::optional<FittedCurve> fitCircle(const CurveFitInput& in)
+{
+    const PointMatrix& P = in.points;
+    if (!in.closed || !in.freeVertex || P.rows() < 4) {
+        return std::nullopt;
+    }
+    const std::optional<BestCircle> best = bestFitCircle(P);
+    if (!best) {
+        return std::nullopt;
+    }
+    const Vec3 n = best->normal;
     FittedCurve c;
     c.kind = CurveKind::Circle;
-    c.centre = mean + g[0] * x + g[1] * y;
-    c.radius = g[2];
+    c.centre = best->centre;
+    c.radius = best->radius;
     c.axis = n * turningSense(P, c.centre, n);
     // The vertex slides onto the circle: the circle's point nearest the first point.
     Vec3 radial = row(P, 0) - c.centre;

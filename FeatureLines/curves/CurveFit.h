@@ -36,6 +36,20 @@ struct CurveFitInput
 /// 1.5 sigma^2). 0 for fewer than 3 points.
 double polylineScatter(const PointMatrix& points, bool closed);
 
+/// A circle in space: its centre, the unit normal of its plane, its radius.
+struct BestCircle
+{
+    Eigen::Vector3d centre;
+    Eigen::Vector3d normal;
+    double radius = 0.0;
+};
+
+/// The circle that fits points best: the plane in which they spread least, Kasa's algebraic
+/// circle in it, then Gauss-Newton on the geometric distances in the plane. nullopt for fewer
+/// than 3 points or where no circle is found (collinear points).
+/// P  #P by 3 points.
+std::optional<BestCircle> bestFitCircle(const PointMatrix& P);
+
 /// The simplest curve that holds the tolerance: a segment, else an arc (open) or a circle
 /// (closed with a free vertex), else a B-spline with as few poles as keep every point within
 /// it (at most one per two points; the last fit is kept where even that does not). rmsDeviation

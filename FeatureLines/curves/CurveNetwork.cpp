@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "FeatureLines/curves/CurveFit.h"
+#include "FeatureLines/curves/LineCorners.h"
 
 namespace featurelines {
 
@@ -43,6 +44,7 @@ struct Split
     int segment = 0;
     double t = 0.0;
     int vertex = -1;
+    bool corner = false;
     double position() const { return segment + t; }
 };
 
@@ -108,9 +110,9 @@ public:
     }
 
     /// Cuts every line at its junctions, joins the free ends (to a vertex near them, else to
-    /// the interior of a line near them, else a vertex of their own), and gives every closed
-    /// line that is cut nowhere a vertex at its first point.
-    void cutLines()
+    /// the interior of a line near them, else a vertex of their own), cuts the lines at their
+    /// corners, and gives every closed line that is cut nowhere a vertex at its first point.
+    void cutLines(const LineCornerOptions& corners)
     {
         for (size_t l = 0; l < result_.lines.size(); ++l) {
             const FeatureLine& line = result_.lines[l];
@@ -136,6 +138,11 @@ public:
                 joinFreeEnd(l, true);
             }
         }
+        if (corners.angle < 180.0) {
+            for (size_t l = 0; l < result_.lines.size(); ++l) {
+                cutAtCorners(l, corners);
+            }
+        }
         for (size_t l = 0; l < result_.lines.size(); ++l) {
             const FeatureLine& line = result_.lines[l];
             if (line.closed && line.points.rows() > 0 && splits_[l].empty()) {
@@ -150,6 +157,7 @@ public:
     std::vector<NetworkEdge> edges(double minimumGap) const
     {
         std::vector<NetworkEdge> out;
+        int run = -1;
         for (size_t l = 0; l < result_.lines.size(); ++l) {
             const FeatureLine& line = result_.lines[l];
             std::vector<Split> cuts = splits_[l];
@@ -158,13 +166,27 @@ public:
             }
             std::sort(cuts.begin(), cuts.end(),
                       [](const Split& a, const Split& b) { return a.position() < b.position(); });
+            // A closed line's pieces are taken from a cut that is no corner, where there is
+            // one, so that each stretch between junctions is a run of consecutive pieces.
+            size_t first = 0;
+            if (line.closed) {
+                while (first < cuts.size() && cuts[first].corner) {
+                    ++first;
+                }
+                first = first == cuts.size() ? 0 : first;
+            }
             const size_t pieces = line.closed ? cuts.size() : cuts.size() - 1;
-            for (size_t k = 0; k < pieces; ++k) {
+            for (size_t j = 0; j < pieces; ++j) {
+                const size_t k = (first + j) % cuts.size();
                 const Split& a = cuts[k];
                 const Split& b = cuts[(k + 1) % cuts.size()];
+                if (j == 0 || !a.corner) {
+                    ++run;
+                }
                 NetworkEdge e;
                 e.type = line.type;
                 e.line = static_cast<int>(l);
+                e.run = run;
                 e.startVertex = a.vertex;
                 e.endVertex = b.vertex;
                 e.points = piecePoints(line, a, b, k + 1 == cuts.size(), minimumGap);
@@ -217,9 +239,58 @@ private:
         return v;
     }
 
-    void addSplit(size_t l, int segment, double t, int vertex)
+    void addSplit(size_t l, int segment, double t, int vertex, bool corner = false)
     {
-        splits_[l].push_back({segment, t, vertex});
+        splits_[l].push_back({segment, t, vertex, corner});
+    }
+
+    /// Cuts line l at its corners. A corner within a join distance of a junction's vertex or
+    /// of another line's corner takes that vertex: where a flat face's border and a corner
+    /// blend's border meet at one point of the part, their lines pass close by each other
+    /// without a junction between them. A corner within half a corner window of a cut of its
+    /// own line (a junction, or where another line's free end joins it) is none: the line
+    /// bends into the junction, and the cut there is a vertex already.
+    void cutAtCorners(size_t l, const LineCornerOptions& options)
+    {
+        const FeatureLine& line = result_.lines[l];
+        const double spacing = result_.spacing;
+        const std::vector<LineCorner> corners =
+            findLineCorners(line.points, line.closed, spacing, options);
+        const std::vector<Split> junctions = splits_[l];
+        for (const LineCorner& c : corners) {
+            const Vec3 at = row(line.points, c.vertex);
+            bool nearJunction = false;
+            for (const Split& j : junctions) {
+                const Vec3 q = vertices[static_cast<size_t>(j.vertex)];
+                nearJunction = nearJunction || (q - at).norm() < options.window * spacing / 2;
+            }
+            if (nearJunction) {
+                continue;
+            }
+            int shared = -1;
+            double nearest = join_;
+            for (const auto& [vertex, owner] : cornerVertices_) {
+                const double d = (vertices[static_cast<size_t>(vertex)] - c.position).norm();
+                if (owner != static_cast<int>(l) && d <= nearest) {
+                    shared = vertex;
+                    nearest = d;
+                }
+            }
+            for (int vertex : junctionVertex_) {
+                if (vertex >= 0) {
+                    const double d = (vertices[static_cast<size_t>(vertex)] - c.position).norm();
+                    if (d <= nearest) {
+                        shared = vertex;
+                        nearest = d;
+                    }
+                }
+            }
+            if (shared < 0) {
+                shared = newVertex(c.position);
+                cornerVertices_.emplace_back(shared, static_cast<int>(l));
+            }
+            addSplit(l, c.vertex, 0.0, shared, true);
+        }
     }
 
     /// The free end of open line l (its last point when atEnd).
@@ -312,6 +383,8 @@ private:
     std::vector<std::vector<Split>> splits_;
     std::vector<int> junctionVertex_;
     std::vector<int> loopVertexFree_;
+    /// The vertices made at corners, and the line each was first made for.
+    std::vector<std::pair<int, int>> cornerVertices_;
 };
 
 /// The fit of one edge's points; a closed edge's points repeat its vertex at the end.
@@ -420,7 +493,8 @@ double cloudNoise(const ExtractionResult& result)
 CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptions& options)
 {
     if (!(options.tolerance > 0) || !(options.noiseFactor >= 0) || !(options.joinDistance >= 0) ||
-        !(options.vertexGap >= 0) || !(options.mergeDistance >= 0) || !(options.smoothAngle >= 0)) {
+        !(options.vertexGap >= 0) || !(options.mergeDistance >= 0) || !(options.smoothAngle >= 0) ||
+        !(options.cornerAngle >= 0) || !(options.cornerWindow > 1)) {
         throw std::invalid_argument("the curve fitting options must be positive numbers");
     }
     CurveNetwork net;
@@ -433,7 +507,10 @@ CurveNetwork fitCurveNetwork(const ExtractionResult& result, const CurveFitOptio
     }
     const double spacing = result.spacing;
     NetworkBuilder builder(result, options.joinDistance * spacing, options.mergeDistance * spacing);
-    builder.cutLines();
+    LineCornerOptions corners;
+    corners.angle = options.cornerAngle;
+    corners.window = options.cornerWindow;
+    builder.cutLines(corners);
     net.edges = builder.edges(options.vertexGap * spacing);
     // A piece of fewer than two vertices, or a loop back to its vertex through fewer than two
     // others (a line folded onto itself), is no curve.

@@ -57,6 +57,10 @@ struct NetworkEdge
     LineType type = LineType::Sharp;
     /// Row of ExtractionResult::lines the piece comes from.
     int line = -1;
+    /// The stretch of that line between junctions (or free ends) the piece belongs to: edges
+    /// with the same `run` are one stretch cut at its corners (CurveFitOptions::cornerAngle),
+    /// in order along the line; numbered from 0 over the network.
+    int run = -1;
     /// Rows of CurveNetwork::vertices; equal for a closed edge.
     int startVertex = -1;
     int endVertex = -1;
@@ -114,6 +118,15 @@ struct CurveFitOptions
     /// Two edges meeting alone at a vertex whose direction turns there by less than this many
     /// degrees run on with one tangent (default 30).
     double smoothAngle = 30.0;
+    /// Below 180: a line is also cut where its direction breaks by this many degrees or more
+    /// between straight or evenly curved sides of `cornerWindow` spacings (findLineCorners in
+    /// LineCorners.h), such as the corners of a flat face's border between fillets; a corner
+    /// within `joinDistance` of a junction or of another line's corner shares its vertex.
+    /// Default 180, cuts at junctions only: on the accuracy benchmark's random parts nine in
+    /// ten of the corners that 30 degrees finds lie on no corner of the part, but where the
+    /// lines stray (docs/design/curves.md, "Corners"). Window default 6.
+    double cornerAngle = 180.0;
+    double cornerWindow = 6.0;
 };
 
 /// The cloud's noise in spacings: the median of its regions' estimates (RegionReport::noise),

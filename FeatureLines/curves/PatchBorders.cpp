@@ -15,7 +15,10 @@ namespace featurelines {
 
 namespace {
 
-/// Per edge, the patches it borders (PatchBorderOptions).
+/// Per edge, the patches it borders (PatchBorderOptions). The pieces a line's stretch between
+/// junctions was cut into at its corners (NetworkEdge::run) are counted as one: a corner adds
+/// vertices to a border, it does not change which patches the line borders (near a corner a
+/// short piece can lie along a second patch, where two lines run side by side into it).
 std::vector<std::vector<int>> patchesAlongEdges(const CurveNetwork& net,
                                                 const std::vector<Eigen::Vector3d>& patchPoints,
                                                 const std::vector<int>& patchOfPoint,
@@ -24,6 +27,12 @@ std::vector<std::vector<int>> patchesAlongEdges(const CurveNetwork& net,
     const double reach = options.reach * spacing;
     const clustergraph::NodeGrid grid(patchPoints, reach);
     std::vector<std::vector<int>> out(net.edges.size());
+    // Per run: the samples used, and per patch the samples that see it.
+    std::map<long, std::pair<long, std::map<int, long>>> runs;
+    const auto runOf = [&](size_t i) {
+        return net.edges[i].run >= 0 ? static_cast<long>(net.edges[i].run)
+                                     : -2 - static_cast<long>(i);
+    };
     for (size_t i = 0; i < net.edges.size(); ++i) {
         const NetworkEdge& e = net.edges[i];
         PointMatrix samples = sampleCurve(e.curve, spacing);
@@ -49,7 +58,8 @@ std::vector<std::vector<int>> patchesAlongEdges(const CurveNetwork& net,
                 used.push_back(samples.row(k).transpose());
             }
         }
-        std::map<int, int> seen;
+        auto& [usedInRun, seen] = runs[runOf(i)];
+        usedInRun += static_cast<long>(used.size());
         const double margin = options.margin * spacing;
         for (const Eigen::Vector3d& s : used) {
             std::map<int, double> nearest;
@@ -68,8 +78,11 @@ std::vector<std::vector<int>> patchesAlongEdges(const CurveNetwork& net,
                 }
             }
         }
+    }
+    for (size_t i = 0; i < net.edges.size(); ++i) {
+        const auto& [used, seen] = runs[runOf(i)];
         for (const auto& [patch, count] : seen) {
-            if (count >= options.share * double(used.size())) {
+            if (static_cast<double>(count) >= options.share * static_cast<double>(used)) {
                 out[i].push_back(patch);
             }
         }

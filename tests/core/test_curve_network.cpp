@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The fitted network of shapes whose edges are known: a box's twelve segments on eight shared
 // corners (also under noise), a closed cylinder's two rim circles, a rounded cube's fillet
-// borders as a few smooth curves.
+// borders as one smooth curve each (by default) or cut at their corners (cornerAngle).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -208,22 +209,44 @@ TEST(CurveNetwork, AClosedCylindersRimsAreCirclesOfItsRadiusAboutItsAxis)
     expectCurvesOnVertices(net);
 }
 
-TEST(CurveNetwork, ARoundedCubesFilletBordersAreAFewSmoothCurves)
+TEST(CurveNetwork, ARoundedCubesFilletBordersAreCutAtTheirCorners)
 {
+    // A cube of edge 40 whose edges and corners are rounded with radius 6: each flat face's
+    // border is a square of side 28 (the fillets' tangent lines), each corner blend's a
+    // spherical triangle of three quarter circles; they touch at the squares' corners.
     const double edge = 40.0, radius = 6.0, h = 0.5;
     const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
     const ExtractionResult r = extractFeatureLines(s.points);
-    const CurveNetwork net = fitCurveNetwork(r);
+    CurveFitOptions options;
+    options.cornerAngle = 30.0;
+    const CurveNetwork net = fitCurveNetwork(r, options);
     ASSERT_EQ(r.lines.size(), 14u) << "8 corner loops and 6 face loops";
-    // Each loop is one closed curve, not a polygon of its hundred vertices.
-    ASSERT_EQ(net.edges.size(), 14u);
+    // Each face loop is four edges meeting at its corners, each corner loop three: not one
+    // closed curve rounded over them.
+    std::map<int, int> edgesOfLine;
     for (const NetworkEdge& e : net.edges) {
-        EXPECT_EQ(e.startVertex, e.endVertex);
-        EXPECT_NE(e.curve.kind, CurveKind::Segment);
-        if (e.curve.kind == CurveKind::BSpline) {
-            EXPECT_TRUE(e.curve.periodic);
-            EXPECT_LE(e.curve.poles.rows(), 40) << e.points.rows() << " points";
+        ++edgesOfLine[e.line];
+        EXPECT_NE(e.startVertex, e.endVertex);
+    }
+    const double inner = edge / 2 - radius;
+    for (size_t l = 0; l < r.lines.size(); ++l) {
+        // A face loop lies in its face's plane, |coordinate| = edge / 2 for one coordinate.
+        const bool face =
+            (r.lines[l].points.cwiseAbs().colwise().minCoeff().array() > edge / 2 - h).any();
+        EXPECT_EQ(edgesOfLine[static_cast<int>(l)], face ? 4 : 3) << "line " << l;
+    }
+    // The face loops' vertices lie at the squares' corners, where two coordinates are the
+    // fillets' inset and the third the face's: within 3.5 spacings, as the smooth lines round
+    // these corners (where a face, two fillets and a corner blend meet) off by up to three.
+    for (const NetworkEdge& e : net.edges) {
+        const bool face = (e.points.cwiseAbs().colwise().minCoeff().array() > edge / 2 - h).any();
+        if (!face) {
+            continue;
         }
+        Eigen::Vector3d v = net.vertices.row(e.startVertex).cwiseAbs().transpose();
+        std::sort(v.data(), v.data() + 3);
+        EXPECT_LE((v - Eigen::Vector3d(inner, inner, edge / 2)).norm(), 3.5 * h)
+            << net.vertices.row(e.startVertex);
     }
     expectCurvesOnVertices(net);
     expectCurvesStayOnTheirPoints(net, 3 * h);
@@ -237,6 +260,27 @@ TEST(CurveNetwork, ARoundedCubesFilletBordersAreAFewSmoothCurves)
         expectLoopsChain(net, b);
     }
     EXPECT_EQ(loops, 28);
+}
+
+TEST(CurveNetwork, ByDefaultARoundedCubesBordersAreOneSmoothCurveEach)
+{
+    const double edge = 40.0, radius = 6.0, h = 0.5;
+    const shapes::Sample s = shapes::roundedCube(edge, radius, h, 5);
+    const ExtractionResult r = extractFeatureLines(s.points);
+    const CurveNetwork net = fitCurveNetwork(r);
+    ASSERT_EQ(r.lines.size(), 14u);
+    // Each loop is one closed curve, not a polygon of its hundred vertices.
+    ASSERT_EQ(net.edges.size(), 14u);
+    for (const NetworkEdge& e : net.edges) {
+        EXPECT_EQ(e.startVertex, e.endVertex);
+        EXPECT_NE(e.curve.kind, CurveKind::Segment);
+        if (e.curve.kind == CurveKind::BSpline) {
+            EXPECT_TRUE(e.curve.periodic);
+            EXPECT_LE(e.curve.poles.rows(), 40) << e.points.rows() << " points";
+        }
+    }
+    expectCurvesOnVertices(net);
+    expectCurvesStayOnTheirPoints(net, 3 * h);
 }
 
 namespace {
@@ -278,6 +322,77 @@ TEST(CurveNetwork, TwoLinesMeetingEndToEndShareAVertexAndRunOnWithOneTangent)
     EXPECT_GT(curveTangent(a.curve, 1.0).dot(curveTangent(b.curve, 0.0)), 1.0 - 1e-8);
     EXPECT_LT((net.vertices.row(a.endVertex).transpose() - helix(2.0)).norm(), 1e-9);
     expectCurvesOnVertices(net);
+}
+
+TEST(CurveNetwork, AFaceBordersCornersAreCutAndItsTightRoundsRunOnWithOneTangent)
+{
+    // One closed line (no junction): a square of side 40 spacings whose corners are rounded
+    // with radius 6 on two of them (a turn through a right angle within about one corner
+    // window) and sharp on the other two. Cut at corners, it gives an edge between every two
+    // corners; at the sharp corners the edges turn by the right angle, at the tight rounds,
+    // cut at their middle, they leave the vertex along one tangent.
+    const double side = 40, r = 6;
+    std::vector<Eigen::Vector3d> points;
+    const auto straight = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        const int n = static_cast<int>(std::round((b - a).norm()));
+        for (int i = 0; i < n; ++i) {
+            points.push_back(a + (b - a) * i / n);
+        }
+    };
+    const auto round = [&](const Eigen::Vector3d& centre, double from) {
+        const int n = static_cast<int>(std::round(pi / 2 * r));
+        for (int i = 0; i < n; ++i) {
+            const double t = from + pi / 2 * i / n;
+            points.push_back(centre + r * Eigen::Vector3d(std::cos(t), std::sin(t), 0));
+        }
+    };
+    // Counter-clockwise from (0, 0): sharp corner, side, round about (side - r, r), side,
+    // sharp corner (side, side)... as (0,0) sharp, (side,0) round, (side,side) sharp,
+    // (0,side) round.
+    straight({0, 0, 0}, {side - r, 0, 0});
+    round({side - r, r, 0}, -pi / 2);
+    straight({side, r, 0}, {side, side, 0});
+    straight({side, side, 0}, {r, side, 0});
+    round({r, side - r, 0}, pi / 2);
+    straight({0, side - r, 0}, {0, 0, 0});
+    ExtractionResult result;
+    result.spacing = 1.0;
+    result.junctions.resize(0, 3);
+    FeatureLine line;
+    line.type = LineType::Smooth;
+    line.closed = true;
+    line.points.resize(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) {
+        line.points.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+    }
+    result.lines.push_back(line);
+    CurveFitOptions options;
+    options.cornerAngle = 30;
+    const CurveNetwork net = fitCurveNetwork(result, options);
+    ASSERT_EQ(net.edges.size(), 4u);
+    ASSERT_EQ(net.vertices.rows(), 4);
+    expectCurvesOnVertices(net);
+    int sharp = 0, smooth = 0;
+    for (const NetworkEdge& e : net.edges) {
+        EXPECT_EQ(e.run, net.edges[0].run) << "one stretch of one line";
+        const NetworkEdge& next = net.edges[(&e - net.edges.data() + 1) % net.edges.size()];
+        ASSERT_EQ(e.endVertex, next.startVertex);
+        const double turn =
+            std::acos(std::clamp(curveTangent(e.curve, 1.0).dot(curveTangent(next.curve, 0.0)),
+                                 -1.0, 1.0)) *
+            180 / pi;
+        const Eigen::Vector3d v = net.vertices.row(e.endVertex).transpose();
+        if ((v - Eigen::Vector3d(0, 0, 0)).norm() < 1 ||
+            (v - Eigen::Vector3d(side, side, 0)).norm() < 1) {
+            EXPECT_NEAR(turn, 90, 5);
+            ++sharp;
+        } else {
+            EXPECT_LT(turn, 0.1) << v.transpose();
+            ++smooth;
+        }
+    }
+    EXPECT_EQ(sharp, 2);
+    EXPECT_EQ(smooth, 2);
 }
 
 TEST(CurveNetwork, ALineEndingOnAnotherLinesInteriorCutsItThere)
