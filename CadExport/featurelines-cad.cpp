@@ -46,6 +46,9 @@ const std::vector<OptionSpec>& extractOptions()
          "where they close)"},
         {"--tolerance", "T",
          "curve fitting tolerance, x point spacing (default 0.25; raised to twice the noise)"},
+        {"--corner-angle", "DEG",
+         "also cut the curves where a line's direction breaks by DEG degrees or more, 0 to 180 "
+         "(default 180: at junctions only; 30 cuts a flat face's border at its corners)"},
         {"--thresholds", "T1,T2", "explicit curvature thresholds (1/length) for every region"},
         {"--no-sharp", "", "no sharp edges"},
         {"--no-smooth", "", "no smooth edges"},
@@ -218,6 +221,7 @@ int runExtract(const Arguments& a)
     }
     CurveFitOptions fit;
     fit.tolerance = a.number("--tolerance", fit.tolerance, 0.0, 100.0, true);
+    fit.cornerAngle = a.number("--corner-angle", fit.cornerAngle, 0.0, 180.0, true);
     const ExtractionOptions options = extractionOptions(a);
     const std::string stdinFormat = cli::standardInputFormat(a, input == "-");
     cli::checkOutputs(input, {{"--output", output}});

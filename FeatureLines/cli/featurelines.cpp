@@ -664,7 +664,9 @@ std::string extractOne(const Arguments& a, const ExtractTarget& t, ExtractionOpt
         report.finish();
     }
     // The lines as CAD geometry: fitted curves on shared vertices, the patches' borders.
-    const CurveNetwork net = fitCurveNetwork(r);
+    CurveFitOptions fit;
+    fit.cornerAngle = a.number("--corner-angle", fit.cornerAngle, 0.0, 180.0, true);
+    const CurveNetwork net = fitCurveNetwork(r, fit);
     const std::vector<PatchBorder> borders = patchBorders(net, r, cloud);
     writeLinesFile(t.lines, t.input, cloud.rows(), r, net, borders);
     if (!t.labels.empty()) {
@@ -804,6 +806,10 @@ const std::vector<Command>& commands()
           {"--no-line-placement", "",
            "leave the smooth lines where the curvature's levels put them (default: moved onto "
            "the curvature step of the points under them)"},
+          {"--corner-angle", "DEG",
+           "also cut the fitted curves where a line's direction breaks by DEG degrees or more, "
+           "0 to 180 (default 180: at junctions only; 30 cuts a flat face's border between "
+           "fillets at its corners, on clean clouds)"},
           {"--no-sharp", "", "no sharp edges (the whole cloud is one smooth region)"},
           {"--no-smooth", "", "no smooth edges"},
           {"--no-boundary", "", "no boundary lines of an open cloud"},

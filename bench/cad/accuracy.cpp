@@ -53,6 +53,8 @@ namespace {
 // The project's extraction with its default options, on the cloud only, as a user runs it
 // (--max-scale changes the one option a robustness run may set).
 featurelines::ExtractionOptions extractionOptions;
+/// The curve network's options (--corner-angle).
+featurelines::CurveFitOptions curveOptions;
 
 /// The extraction's lines, and the same lines as CAD geometry (issue 18): the fitted curve
 /// network and its patches' borders.
@@ -78,7 +80,7 @@ std::optional<FeatureLinesRun> runFeatureLines(const PointMatrix& cloud)
         t.radius = l.blendRadius;
         run.lines.push_back(std::move(t));
     }
-    run.network = featurelines::fitCurveNetwork(result);
+    run.network = featurelines::fitCurveNetwork(result, curveOptions);
     run.borders = featurelines::patchBorders(run.network, result, cloud);
     run.result = result;
     return run;
@@ -94,6 +96,10 @@ struct CurveQuality
     std::array<int, 4> kinds{};
     int patches = 0;
     int closedPatches = 0;
+    /// Vertices where the curves cut a line at a corner (--corner-angle), and those within
+    /// the tolerance of a true vertex (an end of a true edge).
+    int corners = 0;
+    int trueCorners = 0;
 };
 
 CurveQuality measureCurves(const FeatureLinesRun& run, const std::vector<TypedPolyline>& truth,
@@ -113,6 +119,31 @@ CurveQuality measureCurves(const FeatureLinesRun& run, const std::vector<TypedPo
     for (const featurelines::PatchBorder& b : run.borders) {
         ++q.patches;
         q.closedPatches += b.closed() ? 1 : 0;
+    }
+    // A corner: a vertex where one edge of a run ends and another of the same run starts.
+    const auto& edges = run.network.edges;
+    std::map<int, std::vector<std::pair<size_t, bool>>> ends; // vertex -> (edge, arrives)
+    for (size_t i = 0; i < edges.size(); ++i) {
+        ends[edges[i].startVertex].push_back({i, false});
+        ends[edges[i].endVertex].push_back({i, true});
+    }
+    const double tolerance = scoring.toleranceFactor * scoring.spacing;
+    for (const auto& [vertex, at] : ends) {
+        if (at.size() != 2 || at[0].first == at[1].first || at[0].second == at[1].second ||
+            edges[at[0].first].run != edges[at[1].first].run) {
+            continue;
+        }
+        ++q.corners;
+        const Eigen::RowVector3d v = run.network.vertices.row(vertex);
+        for (const TypedPolyline& t : truth) {
+            const Eigen::Index n = t.points.rows();
+            if (!t.closed && n > 0 &&
+                std::min((t.points.row(0) - v).norm(), (t.points.row(n - 1) - v).norm()) <=
+                    tolerance) {
+                ++q.trueCorners;
+                break;
+            }
+        }
     }
     return q;
 }
@@ -204,6 +235,8 @@ const char* usage =
     "                          (default 8; 1: the cloud's own sampling only)\n"
     "  --no-line-placement     leave the smooth lines where the curvature's levels put\n"
     "                          them (no fit of the curvature step)\n"
+    "  --corner-angle DEG      also cut the fitted curves where a line's direction breaks\n"
+    "                          by this much (default 180: at junctions only)\n"
     "  --surfaces              also fit the patches' surfaces, sew them and measure them\n"
     "                          against the true B-rep (a table of its own)\n"
     "  --bspline M             with --surfaces: a patch no analytic surface fits gets the\n"
@@ -310,6 +343,8 @@ Arguments parseArguments(int argc, char** argv)
             }
         } else if (opt == "--surface-floor") {
             a.surfaceFloors = parseSurfaceFloors(value());
+        } else if (opt == "--corner-angle") {
+            curveOptions.cornerAngle = parseNumber(value(), opt);
         } else if (opt == "--no-line-placement") {
             extractionOptions.smooth.placeCoarseLines = false;
             extractionOptions.smooth.placeOwnScaleLines = false;
@@ -854,7 +889,7 @@ SurfaceQuality surfaceRow(const FeatureLinesRun& run, const PointMatrix& cloud,
         featurelines::surfaces::PatchSurfaceOptions options;
         options.bspline = bspline;
         const featurelines::surfaces::PatchSurfaces fitted =
-            featurelines::surfaces::surfacesOfExtraction(cloud, run.result, {}, options);
+            featurelines::surfaces::surfacesOfExtraction(cloud, run.result, curveOptions, options);
         const double fitSeconds = seconds(start);
         q = measureSurfaces(fitted, truth, cloud, spacing);
         q.seconds = fitSeconds;
@@ -1054,8 +1089,9 @@ void printLineQuality(const Results& results, bool markdown)
 }
 
 /// Per part the extraction's fitted curves (issue 18): their count by kind, their distance to
-/// the true edges (samples within the tolerance of one), edges per true edge, and the share
-/// of the patches whose border is closed.
+/// the true edges (samples within the tolerance of one), edges per true edge, the share of
+/// the patches whose border is closed, and the corners cut (--corner-angle) with those on a
+/// true vertex.
 void printCurveQuality(const Results& results, bool markdown)
 {
     std::vector<std::vector<std::string>> table;
@@ -1070,7 +1106,8 @@ void printCurveQuality(const Results& results, bool markdown)
                          formatNumber(c.quality.p95Distance, 2),
                          formatNumber(c.quality.linesPerTrueEdge, 2),
                          c.patches ? formatNumber(double(c.closedPatches) / c.patches) : "-",
-                         std::to_string(c.closedPatches) + "/" + std::to_string(c.patches)});
+                         std::to_string(c.closedPatches) + "/" + std::to_string(c.patches),
+                         std::to_string(c.corners) + " (" + std::to_string(c.trueCorners) + ")"});
     }
     if (table.empty()) {
         return;
@@ -1080,7 +1117,8 @@ void printCurveQuality(const Results& results, bool markdown)
                      "tolerance of a true edge)\n";
     }
     printTable({"part", "noise", "edges", "segment", "arc", "circle", "bspline", "median dist",
-                "p95 dist", "edges/true edge", "closed patches", "closed/patches"},
+                "p95 dist", "edges/true edge", "closed patches", "closed/patches",
+                "corners (true)"},
                table, markdown);
 }
 

@@ -2,7 +2,9 @@
 # featurelines extract's fitted network as a user reads it: a cube's JSON "network" has 12
 # segments on 8 shared corners and 6 closed face borders of 4 edges; --curves writes them as
 # OBJ polylines (12 l records on the 8 shared vertices) or PLY (vertex and edge elements); a
-# closed cylinder gives its two rims as circles of its radius; a bad --curves name exits 2 or 1.
+# closed cylinder gives its two rims as circles of its radius; a flat square sheet's boundary is
+# one closed curve, or with --corner-angle its four sides; a bad --curves name or corner angle
+# exits 2 or 1.
 # Usage: test_curves.sh FEATURELINES SCRATCH
 set -u
 bin=${1:?usage: test_curves.sh FEATURELINES SCRATCH}
@@ -95,6 +97,35 @@ for c in circles:
     assert c["start_vertex"] == c["end_vertex"]
 assert sum(len(b["loops"]) for b in n["patch_borders"]) == 4, n["patch_borders"]
 PY
+
+# A flat square sheet (side 20, spacing 0.25): its one boundary loop is one closed curve, and
+# with --corner-angle 30 four segments of its side meeting at its four corners
+mkdir -p "$work/sheet"
+awk 'BEGIN { srand(5); s = 0.25;
+    for (x = 0; x <= 20.0001; x += s) for (y = 0; y <= 20.0001; y += s)
+        printf "%.6f %.6f 0\n", x + 0.05 * (rand() - 0.5), y + 0.05 * (rand() - 0.5) }' \
+    > "$work/sheet/square.xyz"
+"$bin" extract "$work/sheet/square.xyz" -o "$work/square.json" > "$work/square.out" \
+    || fail "extract on the square sheet exited $?"
+grep -q "^curves: 1 (segment 0, arc 0, circle 0, bspline 1), vertices 1, patches closed 1 of 1$" \
+    "$work/square.out" || fail "square sheet curve summary: $(cat "$work/square.out")"
+"$bin" extract "$work/sheet/square.xyz" -o "$work/square30.json" --corner-angle 30 \
+    > "$work/square30.out" || fail "extract --corner-angle 30 on the square sheet exited $?"
+$py - "$work/square30.json" <<'PY' || fail "square sheet cut at its corners: see above"
+import json, sys
+n = json.load(open(sys.argv[1]))["network"]
+assert len(n["vertices"]) == 4, "%d vertices" % len(n["vertices"])
+for p in n["vertices"]:  # each a corner of the square, within a fifth of a spacing
+    assert all(min(abs(c), abs(c - 20)) < 0.05 for c in p), "vertex %s is no corner" % p
+assert len(n["edges"]) == 4, "%d edges" % len(n["edges"])
+for e in n["edges"]:
+    assert e["kind"] == "segment" and e["type"] == "boundary", e
+    assert abs(e["length"] - 20) < 0.1, "edge length %g" % e["length"]
+b = n["patch_borders"]
+assert len(b) == 1 and b[0]["closed"] and len(b[0]["loops"][0]) == 4, b
+PY
+expect 2 "--corner-angle must be at least 0 and at most 180" \
+    extract "$work/sheet/square.xyz" -o "$work/x.json" --corner-angle 200
 
 # A folder: NAME.obj per input beside the lines files
 "$bin" extract "$work/in" -o "$work/out" --curves "$work/curves" --quiet > /dev/null \
