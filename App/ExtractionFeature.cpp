@@ -223,6 +223,14 @@ Extraction::Extraction()
     ADD_PROPERTY_TYPE(MergeEndToEnd, (false), "Cleaning", App::Prop_None,
                       "Two lines of one kind whose ends meet at a point where no other line "
                       "ends become one line.");
+    ADD_PROPERTY_TYPE(CornerAngle, (180.0), "Cleaning", App::Prop_None,
+                      "Below 180: the fitted curves are also cut where a line's direction breaks "
+                      "by this angle or more, so that a flat face's border between fillets is its "
+                      "edges meeting at its corners rather than one closed curve. For clean "
+                      "clouds (30 degrees): on noisy or straying lines most corners found are not "
+                      "the part's. 180: cut at junctions only.");
+    static const App::PropertyQuantityConstraint::Constraints cornerAngles{0.0, 180.0, 5.0};
+    CornerAngle.setConstraints(&cornerAngles);
 
     ADD_PROPERTY_TYPE(SharpWires, (TopoDS_Shape()), "Output", outputType,
                       "The sharp edges: a compound of wires.");
@@ -415,6 +423,7 @@ LineCleaning Extraction::lineCleaning() const
     const std::vector<long>& removed = RemovedLines.getValues();
     cleaning.removed.assign(removed.begin(), removed.end());
     cleaning.mergeEndToEnd = MergeEndToEnd.getValue();
+    cleaning.cornerAngle = CornerAngle.getValue();
     return cleaning;
 }
 

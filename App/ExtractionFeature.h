@@ -71,6 +71,8 @@ public:
     App::PropertyLength MinLineLength;
     App::PropertyIntegerList RemovedLines;
     App::PropertyBool MergeEndToEnd;
+    /// Below 180 degrees: the fitted curves are also cut at the lines' corners.
+    App::PropertyAngle CornerAngle;
 
     // Output: the lines by type (Shape holds them all: sharp, then smooth, then boundary), one
     // wire per line on the fitted network's edges (NetworkOutputs.h).

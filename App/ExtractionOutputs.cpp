@@ -342,7 +342,7 @@ ExtractionOutputs toOutputs(const ExtractionResult& result, const PointMatrix& P
     ExtractionOutputs out;
     const std::vector<CleanedLine> lines = cleanLines(result.lines, cleaning, toWorld);
     out.polylines = makePolylineWires(lines, toWorld);
-    out.network = makeNetworkOutputs(result, P, lines, toWorld);
+    out.network = makeNetworkOutputs(result, P, lines, toWorld, cleaning.cornerAngle);
     out.junctions = worldJunctions(result, toWorld);
     out.spacing = result.spacing;
     setThresholds(out, result);

@@ -57,6 +57,9 @@ struct LineCleaning
     std::vector<long> removed;
     /// Two lines whose ends sit on one junction where no other remaining line ends become one.
     bool mergeEndToEnd = false;
+    /// Below 180: the fitted curves are also cut where a line's direction breaks by this many
+    /// degrees (featurelines::CurveFitOptions::cornerAngle).
+    double cornerAngle = 180.0;
 };
 
 /// A line of the result after cleaning, with the ids of the result's lines it is made of.

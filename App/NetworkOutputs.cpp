@@ -158,12 +158,14 @@ gp_Trsf toTrsf(const Base::Matrix4D& m)
 
 NetworkOutputs makeNetworkOutputs(const ExtractionResult& result, const PointMatrix& P,
                                   const std::vector<CleanedLine>& lines,
-                                  const Base::Matrix4D& toWorld)
+                                  const Base::Matrix4D& toWorld, double cornerAngle)
 {
     NetworkOutputs out;
     CurveNetwork network;
     try {
-        network = keptNetwork(featurelines::fitCurveNetwork(result), lines);
+        featurelines::CurveFitOptions fit;
+        fit.cornerAngle = cornerAngle;
+        network = keptNetwork(featurelines::fitCurveNetwork(result, fit), lines);
     } catch (const std::exception& e) {
         // Never a failed recompute for want of curves: the lines stay, as polylines.
         out.curveProblems.push_back(std::string("the curves could not be fitted (") + e.what() +

@@ -21,10 +21,10 @@ gp_Trsf toTrsf(const Base::Matrix4D& toWorld);
 /// The network of the cleaned lines (the edges of the lines `lines` keeps), in world
 /// coordinates, and the patches' borders on it. P  #P by 3 the cloud `result` came from, in its
 /// own coordinates (the patch ids are per row). When the core cannot fit the network at all,
-/// every line is its polyline, said in curveProblems.
+/// every line is its polyline, said in curveProblems. cornerAngle: CurveFitOptions::cornerAngle.
 NetworkOutputs makeNetworkOutputs(const featurelines::ExtractionResult& result,
                                   const featurelines::PointMatrix& P,
                                   const std::vector<CleanedLine>& lines,
-                                  const Base::Matrix4D& toWorld);
+                                  const Base::Matrix4D& toWorld, double cornerAngle = 180.0);
 
 } // namespace FeatureLines

@@ -3,8 +3,9 @@
 12 straight edges on 8 shared corners and its 6 faces get closed border wires on those edges; a
 capped cylinder's rims are two circles of its radius; STEP, IGES and BREP files of the Shape read
 back with its edge count; a Surface::Filling built on one face's border wire lies on that face's
-points; a patch left open by a deleted line is reported, not a failed recompute; featurelines-cad
-writes a BREP and a STEP that FreeCAD reads back."""
+points; a patch left open by a deleted line is reported, not a failed recompute; CornerAngle cuts
+a rounded cube's loops at their corners; featurelines-cad writes a BREP and a STEP that FreeCAD
+reads back."""
 
 import math
 import os
@@ -233,6 +234,51 @@ class RoundedCubeTest(unittest.TestCase):
             self.assertEqual(list(lines.CurveProblems), [])
             self.assertEqual(kinds.count("polyline"), 0, kinds)
             self.assertGreaterEqual(kinds.count("bspline"), 12, kinds)
+        finally:
+            support.close_document(doc)
+
+
+class CornerTest(unittest.TestCase):
+    def test_corner_angle_cuts_the_rounded_cubes_loops_at_their_corners(self):
+        """CornerAngle 30: each face loop of a rounded cube is its four edges between the
+        square's corners, each corner blend's loop is cut at its corners, every patch still
+        closed; back at 180 each loop is one closed edge again."""
+        edge, radius = 40.0, 6.0
+        doc = support.new_document("RoundedCubeCorners")
+        try:
+            _, lines = support.add_extraction(
+                doc, sampled_shapes.rounded_cube(edge, radius, SPACING, 6))
+            self.assertEqual(lines.CornerAngle.Value, 180.0, "off by default")
+            lines.CornerAngle = 30
+            doc.recompute()
+            self.assertEqual(support.error_message(lines), "")
+            wires = lines.SmoothWires.Wires
+            self.assertEqual(len(wires), 14)
+            inner = edge / 2 - radius
+            faces, blends = [], []
+            for wire in wires:
+                self.assertTrue(wire.isClosed())
+                # A face loop lies in its face's plane: one coordinate is +-edge/2 throughout.
+                on_face = any(all(abs(abs(v.Point[k]) - edge / 2) < SPACING for v in wire.Vertexes)
+                              for k in range(3))
+                (faces if on_face else blends).append(wire)
+            self.assertEqual((len(faces), len(blends)), (6, 8))
+            for wire in faces:
+                self.assertEqual(len(wire.Edges), 4)
+                for v in wire.Vertexes:  # at the square's corners, within 3.5 spacings
+                    a = sorted(abs(c) for c in v.Point)
+                    self.assertLess(math.dist(a, (inner, inner, edge / 2)), 3.5 * SPACING, v.Point)
+            # A corner blend's loop turns through a right angle between arcs of its radius;
+            # each is cut at two or three of its three corners (between strongly curved arcs a
+            # corner can look like the arcs' own bend: docs/design/curves.md, "Corners").
+            for wire in blends:
+                self.assertIn(len(wire.Edges), (2, 3))
+            self.assertGreaterEqual(sum(len(w.Edges) for w in blends), 20)
+            self.assertEqual(list(lines.OpenPatches), [])
+            self.assertEqual(list(lines.CurveProblems), [])
+            lines.CornerAngle = 180
+            doc.recompute()
+            self.assertEqual([len(w.Edges) for w in lines.SmoothWires.Wires], [1] * 14)
         finally:
             support.close_document(doc)
 
