@@ -72,15 +72,13 @@ double circleResidual(const std::vector<Vec3>& points)
 }
 
 /// One side of a corner: its points, how far along the line they reach, their line and its
-/// direction of travel (into the corner before it, out of it after it), and the sum of the
-/// squared distances to the side's own curve, its line or (where it fits better) an arc.
+/// direction of travel (into the corner before it, out of it after it).
 struct Side
 {
     std::vector<Vec3> points;
     double reached = 0.0;
     FittedLine line;
     Vec3 travel = Vec3::UnitX();
-    double squaredResidual = 0.0;
 };
 
 /// The points of the line on one side of vertex i (backwards when `before`), from `from` to
@@ -129,8 +127,15 @@ Side makeSide(const PointMatrix& P, bool closed, Eigen::Index i, bool before, do
     const Vec3 lineAway =
         sd.line.direction.dot(away) >= 0 ? sd.line.direction : Vec3(-sd.line.direction);
     sd.travel = before ? Vec3(-lineAway) : lineAway;
-    sd.squaredResidual = std::min(sd.line.squaredResidual, circleResidual(sd.points));
     return sd;
+}
+
+/// The sum of the squared distances of a side's points to its own curve: its line or, where
+/// it fits better, an arc. Only for the vertices that pass the turn tests: a circle fit costs
+/// far more than the lines.
+double ownResidual(const Side& sd)
+{
+    return std::min(sd.line.squaredResidual, circleResidual(sd.points));
 }
 
 double turnDegrees(const Vec3& a, const Vec3& b)
@@ -141,8 +146,7 @@ double turnDegrees(const Vec3& a, const Vec3& b)
 struct Candidate
 {
     LineCorner corner;
-    double sideResidual = 0.0; // mean squared distance of the sides to their own curves
-    double along = 0.0;        // arc length from the line's first vertex
+    double along = 0.0; // arc length from the line's first vertex
 };
 
 } // namespace
@@ -208,7 +212,7 @@ std::vector<LineCorner> findLineCorners(const PointMatrix& P, bool closed, doubl
         // one circle through both: where noise makes a gentle arc's turn uncertain, its
         // points still lie on one circle.
         const double count = static_cast<double>(before.points.size() + after.points.size());
-        const double sides = (before.squaredResidual + after.squaredResidual) / count;
+        const double sides = (ownResidual(before) + ownResidual(after)) / count;
         std::vector<Vec3> both = before.points;
         both.insert(both.end(), after.points.begin(), after.points.end());
         const double floor = 0.05 * spacing;
@@ -219,7 +223,6 @@ std::vector<LineCorner> findLineCorners(const PointMatrix& P, bool closed, doubl
         Candidate c;
         c.corner.vertex = static_cast<int>(i);
         c.corner.turn = wideTurn;
-        c.sideResidual = sides;
         c.along = s;
         // The corner where the two sides' lines pass nearest each other.
         const Vec3 p = row(P, i);
@@ -265,7 +268,7 @@ std::vector<LineCorner> findLineCorners(const PointMatrix& P, bool closed, doubl
             const auto straight = [&](const Side& sd) {
                 const double floor =
                     0.05 * 0.05 * spacing * spacing * static_cast<double>(sd.points.size());
-                return sd.line.squaredResidual <= std::max(4 * sd.squaredResidual, floor);
+                return sd.line.squaredResidual <= std::max(4 * ownResidual(sd), floor);
             };
             if ((q0 - q1).norm() <= spacing && nearest <= 1.5 * spacing && straight(placeBefore) &&
                 straight(placeAfter)) {

@@ -16,7 +16,7 @@ struct LineCornerOptions
 {
     /// Each side of a candidate corner is the run of the line from `gap` to `window` spacings
     /// away from it (defaults 1 and 6): the lines round a corner off over about a spacing, and
-    /// six spacings hold a dozen vertices, enough to tell a straight side from an arc.
+    /// six spacings hold half a dozen vertices or more, enough for a side's direction.
     double gap = 1.0;
     double window = 6.0;
     /// The two sides' lines turn by at least this many degrees (default 30, the curve
@@ -37,8 +37,9 @@ struct LineCorner
 {
     /// Row of the line's points nearest the corner.
     int vertex = -1;
-    /// The corner: the point nearest both sides' fitted lines where they pass within a
-    /// spacing of each other and of the vertex, else the vertex itself.
+    /// The corner: where both sides (from three gaps out) are straight, the point nearest both
+    /// their fitted lines, when these pass within a spacing of each other and it lies within
+    /// a spacing and a half of the line (which only rounds the corner off); else the vertex.
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     /// Turn between the two sides' directions, degrees.
     double turn = 0.0;
